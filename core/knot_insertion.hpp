@@ -1,0 +1,20 @@
+#pragma once
+// Knot insertion and refinement (Boehm; Piegl & Tiller A5.1, A5.3). The shape never changes.
+#include "core/nurbs_curve.hpp"
+#include "core/nurbs_surface.hpp"
+
+namespace cadnurbs {
+
+enum class SurfaceDirection { u, v };
+
+// Inserts t `times` times (the multiplicity never exceeds degree... order-1 is the most that keeps
+// the curve continuous). Refuses t outside the domain or a resulting multiplicity above the order.
+NurbsCurve insert_knot(const NurbsCurve& curve, double t, int times = 1);
+NurbsSurface insert_knot(const NurbsSurface& surface, SurfaceDirection direction, double t, int times = 1);
+
+// Inserts every value of `new_knots` (non-decreasing, inside the domain).
+NurbsCurve refine_knots(const NurbsCurve& curve, const std::vector<double>& new_knots);
+NurbsSurface refine_knots(const NurbsSurface& surface, SurfaceDirection direction,
+                          const std::vector<double>& new_knots);
+
+}  // namespace cadnurbs

@@ -1,0 +1,145 @@
+#include "core/knot_vector.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace cadnurbs {
+
+std::string knot_vector_fault(const std::vector<double>& knots, int order, int count) {
+  std::ostringstream out;
+  if (order < 2) {
+    out << "order " << order << " is below 2";
+    return out.str();
+  }
+  if (count < order) {
+    out << count << " control points are too few for order " << order << " (need at least " << order << ")";
+    return out.str();
+  }
+  if (static_cast<int>(knots.size()) != count + order) {
+    out << knots.size() << " knots given, but " << count << " control points of order " << order << " need "
+        << count + order;
+    return out.str();
+  }
+  for (size_t i = 0; i < knots.size(); ++i) {
+    if (!std::isfinite(knots[i])) {
+      out << "knot " << i << " is not a finite number";
+      return out.str();
+    }
+    if (i > 0 && knots[i] < knots[i - 1]) {
+      out << "knot " << i << " (" << knots[i] << ") is smaller than knot " << i - 1 << " (" << knots[i - 1]
+          << "); knots must not decrease";
+      return out.str();
+    }
+  }
+  // An interior knot repeated more than `order` times would split the curve; more than order-1 inside
+  // the domain makes it discontinuous, which we allow (C-1 is legal), but never above order.
+  int run = 1;
+  for (size_t i = 1; i < knots.size(); ++i) {
+    run = knots[i] == knots[i - 1] ? run + 1 : 1;
+    if (run > order) {
+      out << "knot value " << knots[i] << " is repeated " << run << " times, more than the order " << order;
+      return out.str();
+    }
+  }
+  if (!(knots[order - 1] < knots[count])) {
+    out << "the domain [knot " << order - 1 << ", knot " << count << "] is empty";
+    return out.str();
+  }
+  return {};
+}
+
+int find_knot_span(const std::vector<double>& knots, int order, int count, double t) {
+  const int p = order - 1;
+  const int n = count - 1;
+  if (t >= knots[n + 1]) {
+    // Last non-empty span.
+    int s = n;
+    while (s > p && knots[s] == knots[s + 1]) --s;
+    return s;
+  }
+  if (t <= knots[p]) {
+    int s = p;
+    while (s < n && knots[s] == knots[s + 1]) ++s;
+    return s;
+  }
+  // knots[span] <= t < knots[span+1]
+  auto it = std::upper_bound(knots.begin() + p, knots.begin() + n + 2, t);
+  return static_cast<int>(it - knots.begin()) - 1;
+}
+
+std::vector<std::vector<double>> basis_function_derivatives(const std::vector<double>& knots, int order,
+                                                            int span, double t, int max_derivative) {
+  const int p = order - 1;
+  const int nd = std::min(max_derivative, p);
+  std::vector<std::vector<double>> ndu(order, std::vector<double>(order, 0.0));
+  std::vector<double> left(order), right(order);
+  ndu[0][0] = 1.0;
+  for (int j = 1; j <= p; ++j) {
+    left[j] = t - knots[span + 1 - j];
+    right[j] = knots[span + j] - t;
+    double saved = 0.0;
+    for (int r = 0; r < j; ++r) {
+      ndu[j][r] = right[r + 1] + left[j - r];
+      const double temp = ndu[r][j - 1] / ndu[j][r];
+      ndu[r][j] = saved + right[r + 1] * temp;
+      saved = left[j - r] * temp;
+    }
+    ndu[j][j] = saved;
+  }
+  std::vector<std::vector<double>> ders(max_derivative + 1, std::vector<double>(order, 0.0));
+  for (int j = 0; j <= p; ++j) ders[0][j] = ndu[j][p];
+  std::vector<std::vector<double>> a(2, std::vector<double>(order, 0.0));
+  for (int r = 0; r <= p; ++r) {
+    int s1 = 0, s2 = 1;
+    a[0][0] = 1.0;
+    for (int k = 1; k <= nd; ++k) {
+      double d = 0.0;
+      const int rk = r - k, pk = p - k;
+      if (r >= k) {
+        a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+        d = a[s2][0] * ndu[rk][pk];
+      }
+      const int j1 = rk >= -1 ? 1 : -rk;
+      const int j2 = (r - 1 <= pk) ? k - 1 : p - r;
+      for (int j = j1; j <= j2; ++j) {
+        a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
+        d += a[s2][j] * ndu[rk + j][pk];
+      }
+      if (r <= pk) {
+        a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+        d += a[s2][k] * ndu[r][pk];
+      }
+      ders[k][r] = d;
+      std::swap(s1, s2);
+    }
+  }
+  int factor = p;
+  for (int k = 1; k <= nd; ++k) {
+    for (int j = 0; j <= p; ++j) ders[k][j] *= factor;
+    factor *= (p - k);
+  }
+  return ders;
+}
+
+std::vector<double> clamped_uniform_knots(int order, int count) {
+  std::vector<double> knots(count + order);
+  const int spans = count - order + 1;
+  for (int i = 0; i < count + order; ++i) {
+    if (i < order) knots[i] = 0.0;
+    else if (i >= count) knots[i] = 1.0;
+    else knots[i] = static_cast<double>(i - order + 1) / spans;
+  }
+  return knots;
+}
+
+std::vector<KnotMultiplicity> knot_multiplicities(const std::vector<double>& knots) {
+  std::vector<KnotMultiplicity> out;
+  for (double k : knots) {
+    if (!out.empty() && out.back().value == k) ++out.back().multiplicity;
+    else out.push_back({k, 1});
+  }
+  return out;
+}
+
+}  // namespace cadnurbs

@@ -1,0 +1,32 @@
+#pragma once
+// Knot vectors and B-spline basis functions (Piegl & Tiller, The NURBS Book, A2.1-A2.3).
+// A knot vector for `count` control points of order `order` (degree order-1) has count+order values.
+#include <string>
+#include <vector>
+
+namespace cadnurbs {
+
+// Empty string when `knots` is a valid knot vector for `count` control points of `order`;
+// otherwise a sentence naming the fault (wrong length, decreasing knot, too high multiplicity...).
+std::string knot_vector_fault(const std::vector<double>& knots, int order, int count);
+
+// Index of the knot span holding t, clamped to the valid domain [knots[order-1], knots[count]].
+// Result s satisfies knots[s] <= t < knots[s+1] (the last non-empty span for t at the end).
+int find_knot_span(const std::vector<double>& knots, int order, int count, double t);
+
+// The `order` non-zero basis functions at t in span `span`, and their derivatives up to `max_derivative`.
+// Returns ders[k][j] = k-th derivative of N_{span-order+1+j}, k <= max_derivative, j < order.
+std::vector<std::vector<double>> basis_function_derivatives(const std::vector<double>& knots, int order,
+                                                            int span, double t, int max_derivative);
+
+// A clamped uniform knot vector on [0, 1] for `count` control points of `order`.
+std::vector<double> clamped_uniform_knots(int order, int count);
+
+// Distinct knot values and their multiplicities.
+struct KnotMultiplicity {
+  double value;
+  int multiplicity;
+};
+std::vector<KnotMultiplicity> knot_multiplicities(const std::vector<double>& knots);
+
+}  // namespace cadnurbs

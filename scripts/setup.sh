@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Installs everything cadnurbs needs on Debian 12, skipping what is already there.
+# Run as root (or with sudo available). Idempotent.
+set -euo pipefail
+
+here=$(cd "$(dirname "$0")/.." && pwd)
+
+debian_packages=(
+  build-essential cmake pkg-config git
+  libeigen3-dev zlib1g-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev
+  libcgal-dev libopenmesh-dev libdraco-dev
+  view3dscene xvfb xauth chromium fonts-dejavu-core
+)
+
+sudo_if_needed() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+
+missing=()
+for p in "${debian_packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  missing+=(nodejs npm)
+fi
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_if_needed apt-get update -q
+  sudo_if_needed env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+else
+  echo "setup: Debian packages present"
+fi
+
+# Viewer test drivers (x_ite, playwright-core), pinned by package-lock.json.
+viewer_dir="$here/tests/viewers"
+if [ -f "$viewer_dir/package-lock.json" ]; then
+  if [ ! -d "$viewer_dir/node_modules/x_ite" ] || [ ! -d "$viewer_dir/node_modules/playwright-core" ] \
+     || [ "$viewer_dir/package-lock.json" -nt "$viewer_dir/node_modules/.package-lock.json" ]; then
+    echo "setup: npm ci in tests/viewers"
+    (cd "$viewer_dir" && npm ci --no-audit --no-fund --loglevel=error)
+  else
+    echo "setup: npm packages present"
+  fi
+fi
