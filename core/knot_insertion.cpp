@@ -46,9 +46,9 @@ InsertionPlace check_insertion(const std::vector<double>& knots, int order, int 
   if (t < knots[order - 1] || t > knots[count])
     throw GeometryError("knot insertion", "knot " + std::to_string(t) + " lies outside the domain");
   const int multiplicity = static_cast<int>(std::count(knots.begin(), knots.end(), t));
-  if (multiplicity + times > order)
+  if (multiplicity + times > order - 1)
     throw GeometryError("knot insertion", "knot " + std::to_string(t) + " would get multiplicity " +
-                                              std::to_string(multiplicity + times) + " above the order");
+                                              std::to_string(multiplicity + times) + " above the degree");
   // Span with knots[span] <= t < knots[span+1], also for t at the domain end.
   int span = static_cast<int>(std::upper_bound(knots.begin(), knots.end(), t) - knots.begin()) - 1;
   span = std::min(span, static_cast<int>(knots.size()) - 1);

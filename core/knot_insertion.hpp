@@ -7,8 +7,8 @@ namespace cadnurbs {
 
 enum class SurfaceDirection { u, v };
 
-// Inserts t `times` times (the multiplicity never exceeds degree... order-1 is the most that keeps
-// the curve continuous). Refuses t outside the domain or a resulting multiplicity above the order.
+// Inserts t `times` times. Refuses t outside the domain or a resulting multiplicity above the
+// degree (order - 1), the most that keeps the curve in one piece.
 NurbsCurve insert_knot(const NurbsCurve& curve, double t, int times = 1);
 NurbsSurface insert_knot(const NurbsSurface& surface, SurfaceDirection direction, double t, int times = 1);
 

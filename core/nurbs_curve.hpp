@@ -1,6 +1,6 @@
 #pragma once
 // A NURBS curve in 2D or 3D. 2D curves (trimming curves in a surface's (u,v) domain) keep z = 0.
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <string>
 #include <vector>
 

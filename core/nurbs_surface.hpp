@@ -1,6 +1,6 @@
 #pragma once
 // A tensor-product NURBS surface. Control points in VRML order: index i + j * u_count (u fastest).
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <string>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
 // An indexed triangle mesh with optional per-corner normals.
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 // A NURBS surface with trimming loops in its (u,v) domain. VRML/X3D rule: the outer loop runs
 // counter-clockwise, holes clockwise. No loops means the whole domain is kept.
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <string>
 #include <variant>
 #include <vector>
