@@ -1,0 +1,10 @@
+string(REPLACE "|" ";" FILES "${FILES}")
+# Writes OUT: a C++ file defining embedded_shape_file(name) over the FILES (by file name).
+set(body "#include <map>\n#include <string>\nnamespace cadnurbs {\nconst std::map<std::string, std::string>& embedded_shape_files() {\n  static const std::map<std::string, std::string> files = {\n")
+foreach(f ${FILES})
+  file(READ ${f} text)
+  get_filename_component(n ${f} NAME)
+  string(APPEND body "    {\"${n}\", R\"cadnurbs(${text})cadnurbs\"},\n")
+endforeach()
+string(APPEND body "  };\n  return files;\n}\n}  // namespace cadnurbs\n")
+file(WRITE ${OUT} "${body}")
