@@ -1,0 +1,65 @@
+#include <filesystem>
+#include <iostream>
+
+#include "converters/arguments.hpp"
+#include "converters/capping_files.hpp"
+#include "converters/commands.hpp"
+#include "formats/common/file_io.hpp"
+#include "samples/capping_shapes.hpp"
+
+namespace cadnurbs {
+
+namespace {
+const char* kHelp =
+    "usage: cadnurbs capping --shape NAME -o OUT [options]\n"
+    "Generates a stair capping (seed 001, ch. 4): the handrail profile swept along a path as one\n"
+    "exact rational quadratic NURBS, the handrail connections closed by trimmed planar lids.\n"
+    "  --shape NAME             capping-90, capping-end, capping-post, or 'all'\n"
+    "  -o OUT                   a file (.wrl .x3dv .x3d .stl) or, with a trailing '/' or an\n"
+    "                           existing directory, a folder that gets NAME.wrl .x3dv .x3d .stl\n"
+    "  --path FILE --profile FILE   outlines in the text format of samples/shapes/README.md\n"
+    "                           (instead of a bundled shape; NAME names the result)\n"
+    "  --max-chord-deviation D  STL: arcs divided so no chord is farther than D mm from its arc\n"
+    "                           (default 0.1)\n"
+    "  --without-lids           NURBS: the swept body alone, connections left open (for viewers\n"
+    "                           that ignore trimming)\n";
+}  // namespace
+
+int run_capping(const std::vector<std::string>& args) {
+  const Arguments a =
+      parse_arguments("capping", args, {"shape", "output", "path", "profile", "max-chord-deviation"}, {"help", "without-lids"});
+  if (a.has("help")) {
+    std::cout << kHelp;
+    return 0;
+  }
+  if (!a.has("shape") || !a.has("output") || !a.positional.empty())
+    throw UsageError("needs --shape NAME and -o OUT (see --help)");
+  const double chord = a.number("max-chord-deviation", 0.1);
+  if (!(chord > 0)) throw UsageError("--max-chord-deviation must be positive");
+  if (a.has("path") != a.has("profile")) throw UsageError("--path and --profile go together");
+
+  std::vector<CappingDefinition> cappings;
+  if (a.has("path")) {
+    cappings.push_back(parse_capping(a.value("shape"), read_file(a.value("path")), a.value("path"),
+                                     read_file(a.value("profile")), a.value("profile")));
+  } else if (a.value("shape") == "all") {
+    for (const auto& name : capping_shape_names()) cappings.push_back(bundled_capping(name));
+  } else {
+    cappings.push_back(bundled_capping(a.value("shape")));
+  }
+
+  const std::string out = a.value("output");
+  const bool to_folder = out.back() == '/' || std::filesystem::is_directory(out);
+  if (!to_folder && cappings.size() > 1) throw UsageError("--shape all needs a folder for -o");
+  for (const auto& capping : cappings) {
+    if (to_folder) {
+      for (const auto& path : write_capping_set(capping, out, chord)) std::cout << path << "\n";
+    } else {
+      write_capping(capping, out, chord, !a.has("without-lids"));
+      std::cout << out << "\n";
+    }
+  }
+  return 0;
+}
+
+}  // namespace cadnurbs

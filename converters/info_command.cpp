@@ -1,0 +1,65 @@
+#include <iomanip>
+#include <iostream>
+
+#include "analysis/tessellate_uniform.hpp"
+#include "converters/arguments.hpp"
+#include "converters/commands.hpp"
+#include "converters/scene_io.hpp"
+#include "core/bounding_box.hpp"
+
+namespace cadnurbs {
+
+namespace {
+const char* kHelp =
+    "usage: cadnurbs info IN [--euclidean]\n"
+    "Lists the shapes of IN: surface degrees, control points, knots, trimming loops, meshes,\n"
+    "the bounding box, the unit and the area (NURBS area from a fine uniform tessellation).\n";
+
+std::string degrees(const NurbsSurface& s) {
+  return std::to_string(s.u_order - 1) + "x" + std::to_string(s.v_order - 1);
+}
+}  // namespace
+
+int run_info(const std::vector<std::string>& args) {
+  const Arguments a = parse_arguments("info", args, {}, {"euclidean", "help"});
+  if (a.has("help")) {
+    std::cout << kHelp;
+    return 0;
+  }
+  if (a.positional.size() != 1) throw UsageError("needs one input file (see --help)");
+  const Scene scene = read_scene(a.positional[0], !a.has("euclidean"));
+  std::cout << a.positional[0] << "\n";
+  double total_area = 0;
+  int index = 0;
+  for_each_shape(scene, [&](const Shape& shape, const Eigen::Affine3d& world, const Colour&) {
+    std::cout << "  [" << index++ << "] " << (shape.name.empty() ? "(unnamed)" : shape.name) << ": ";
+    double area = 0;
+    if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry)) {
+      const auto& s = t->surface;
+      std::cout << (t->loops.empty() ? "NURBS surface" : "trimmed NURBS surface") << ", degree " << degrees(s) << ", "
+                << s.u_count << "x" << s.v_count << " control points, " << s.u_knots.size() + s.v_knots.size()
+                << " knots, " << (s.is_rational() ? "rational" : "polynomial") << ", " << t->loops.size()
+                << " trimming loops";
+      TriangleMesh m = tessellate_uniform(*t, 16);
+      for (auto& p : m.positions) p = world * p;
+      area = mesh_area(m);
+    } else if (const auto* c = std::get_if<NurbsCurve>(&shape.geometry)) {
+      std::cout << "NURBS curve, degree " << c->degree() << ", " << c->count() << " control points";
+    } else if (const auto* m = std::get_if<TriangleMesh>(&shape.geometry)) {
+      TriangleMesh w = *m;
+      for (auto& p : w.positions) p = world * p;
+      area = mesh_area(w);
+      std::cout << "mesh, " << m->positions.size() << " vertices, " << m->triangles.size() << " triangles";
+    }
+    if (area > 0) std::cout << ", area " << std::setprecision(8) << area;
+    std::cout << "\n";
+    total_area += area;
+  });
+  const auto box = scene_bounding_box(scene);
+  std::cout << "  bounding box (control points and vertices): " << box.min().transpose() << "  to  "
+            << box.max().transpose() << " " << scene.unit.name << "\n";
+  std::cout << "  total area: " << std::setprecision(8) << total_area << " " << scene.unit.name << "^2\n";
+  return 0;
+}
+
+}  // namespace cadnurbs

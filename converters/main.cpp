@@ -1,0 +1,43 @@
+// cadnurbs: the command line. Thin: it picks the subcommand and turns errors into one line.
+#include <iostream>
+#include <map>
+
+#include "converters/arguments.hpp"
+#include "converters/commands.hpp"
+
+namespace {
+
+const char* kUsage =
+    "usage: cadnurbs COMMAND [options]\n"
+    "commands:\n"
+    "  convert IN -o OUT [--mesh] [--steps N] [--precision N] [--euclidean] [--self-contained]\n"
+    "  info    IN\n"
+    "  capping --shape NAME|all -o OUT [--path FILE --profile FILE] [--max-chord-deviation D]\n"
+    "  demo    [-o DIR]\n"
+    "'cadnurbs COMMAND --help' tells more.\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace cadnurbs;
+  const std::map<std::string, int (*)(const std::vector<std::string>&)> commands = {
+      {"convert", run_convert}, {"info", run_info}, {"capping", run_capping}, {"demo", run_demo}};
+  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+    std::cout << kUsage;
+    return argc < 2 ? 2 : 0;
+  }
+  const auto command = commands.find(argv[1]);
+  if (command == commands.end()) {
+    std::cerr << "cadnurbs: unknown command '" << argv[1] << "'\n" << kUsage;
+    return 2;
+  }
+  try {
+    return command->second(std::vector<std::string>(argv + 2, argv + argc));
+  } catch (const UsageError& e) {
+    std::cerr << "cadnurbs " << argv[1] << ": " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "cadnurbs " << argv[1] << ": " << e.what() << "\n";
+    return 1;
+  }
+}

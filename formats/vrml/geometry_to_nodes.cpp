@@ -1,0 +1,202 @@
+#include "formats/vrml/geometry_to_nodes.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <map>
+
+#include "formats/vrml/nurbs_tolerances.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+// Unit normals only steer shading: 1e-3 is far below a visible change (0.06 degrees).
+constexpr double normal_tolerance = 1e-3;
+
+NumberPrecision with_digits(double tolerance, const GeometryPrecision& p) {
+  return NumberPrecision{tolerance, p.significant_digits};
+}
+
+double written_value(double value, const NumberPrecision& precision) {
+  const std::string text = format_number(value, precision);
+  double parsed = 0.0;
+  std::from_chars(text.data(), text.data() + text.size(), parsed);
+  return parsed;
+}
+
+bool all_ones(const std::vector<double>& weights) {
+  return std::all_of(weights.begin(), weights.end(), [](double w) { return w == 1.0; });
+}
+
+// Single-precision viewers keep about 7 significant digits; finer precision needs CoordinateDouble.
+bool needs_double(const std::vector<Eigen::Vector3d>& points, const NumberPrecision& precision) {
+  if (precision.significant_digits > 0) return precision.significant_digits > 7;
+  double largest = 0.0;
+  for (const auto& p : points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  return precision.tolerance < largest * 6e-8;
+}
+
+NodePtr coordinate_node(VrmlDialect dialect, std::vector<Eigen::Vector3d> points, const NumberPrecision& precision) {
+  const bool use_double = dialect == VrmlDialect::x3d && needs_double(points, precision);
+  auto node = make_node(use_double ? "CoordinateDouble" : "Coordinate");
+  node->set("point", MFVec3f{std::move(points)}, precision);
+  return node;
+}
+
+// Control points as written: w·P or P.
+template <class Point>
+std::vector<Point> written_points(const std::vector<Point>& points, const std::vector<double>& weights,
+                                  bool homogeneous) {
+  std::vector<Point> out = points;
+  if (homogeneous && !weights.empty())
+    for (size_t i = 0; i < out.size(); ++i) out[i] *= weights[i];
+  return out;
+}
+
+// The fields every NURBS surface node has (NurbsSurface, NurbsPatchSurface, NurbsTrimmedSurface).
+void set_surface_fields(Node& node, const NurbsSurface& s, VrmlDialect dialect, const GeometryPrecision& p) {
+  const NurbsTolerances t = surface_tolerances(s, p.coordinate_tolerance, p.homogeneous);
+  const bool rational = s.is_rational() && !all_ones(s.weights);
+  const auto points = written_points(s.points, rational ? s.weights : std::vector<double>{}, p.homogeneous);
+  node.set("uDimension", s.u_count);
+  node.set("vDimension", s.v_count);
+  node.set("uKnot", MFFloat{s.u_knots}, knot_precision(s.u_knots, t.knot, p.significant_digits));
+  node.set("vKnot", MFFloat{s.v_knots}, knot_precision(s.v_knots, t.knot, p.significant_digits));
+  node.set("uOrder", s.u_order);
+  node.set("vOrder", s.v_order);
+  if (dialect == VrmlDialect::vrml97)
+    node.set("controlPoint", MFVec3f{points}, with_digits(t.control_point, p));
+  if (rational) node.set("weight", MFFloat{s.weights}, with_digits(t.weight, p));
+  node.set("solid", false);
+  if (dialect == VrmlDialect::x3d)
+    node.set("controlPoint", SFNode{coordinate_node(dialect, points, with_digits(t.control_point, p))});
+}
+
+NodePtr trim_segment_node(const TrimSegment& segment, VrmlDialect dialect, double parameter_tolerance,
+                          const GeometryPrecision& p) {
+  const std::string points_field = dialect == VrmlDialect::vrml97 ? "point" : "controlPoint";
+  if (const auto* polyline = std::get_if<Polyline2D>(&segment)) {
+    auto node = make_node(dialect == VrmlDialect::vrml97 ? "Polyline2D" : "ContourPolyline2D");
+    node->set(points_field, MFVec2f{polyline->points}, with_digits(parameter_tolerance, p));
+    return node;
+  }
+  const auto& c = std::get<NurbsCurve>(segment);
+  const NurbsTolerances t = curve_tolerances(c, parameter_tolerance, p.homogeneous);
+  const bool rational = c.is_rational() && !all_ones(c.weights);
+  std::vector<Eigen::Vector2d> uv;
+  for (const auto& q : c.points) uv.push_back(q.head<2>());
+  auto node = make_node("NurbsCurve2D");
+  node->set(points_field, MFVec2f{written_points(uv, rational ? c.weights : std::vector<double>{}, p.homogeneous)},
+            with_digits(t.control_point, p));
+  node->set("knot", MFFloat{c.knots}, knot_precision(c.knots, t.knot, p.significant_digits));
+  node->set("order", c.order);
+  if (rational) node->set("weight", MFFloat{c.weights}, with_digits(t.weight, p));
+  return node;
+}
+
+MFNode trimming_contours(const TrimmedSurface& trimmed, VrmlDialect dialect, const GeometryPrecision& p) {
+  const double parameter_tolerance = trim_parameter_tolerance(trimmed.surface, p.coordinate_tolerance);
+  MFNode contours;
+  for (const auto& loop : trimmed.loops) {
+    MFNode segments;
+    for (const auto& segment : loop.segments)
+      segments.nodes.push_back(trim_segment_node(segment, dialect, parameter_tolerance, p));
+    auto contour = make_node("Contour2D");
+    contour->set("children", std::move(segments));
+    contours.nodes.push_back(contour);
+  }
+  return contours;
+}
+
+NodePtr surface_node(const TrimmedSurface& trimmed, VrmlDialect dialect, const GeometryPrecision& p) {
+  if (dialect == VrmlDialect::vrml97) {
+    auto surface = make_node("NurbsSurface");
+    set_surface_fields(*surface, trimmed.surface, dialect, p);
+    if (trimmed.loops.empty()) return surface;
+    auto node = make_node("TrimmedSurface");
+    node->set("surface", SFNode{surface});
+    node->set("trimmingContour", trimming_contours(trimmed, dialect, p));
+    return node;
+  }
+  auto node = make_node(trimmed.loops.empty() ? "NurbsPatchSurface" : "NurbsTrimmedSurface");
+  set_surface_fields(*node, trimmed.surface, dialect, p);
+  if (!trimmed.loops.empty()) node->set("trimmingContour", trimming_contours(trimmed, dialect, p));
+  return node;
+}
+
+NodePtr curve_node(const NurbsCurve& c, VrmlDialect dialect, const GeometryPrecision& p) {
+  const NurbsTolerances t = curve_tolerances(c, p.coordinate_tolerance, p.homogeneous);
+  const bool rational = c.is_rational() && !all_ones(c.weights);
+  const auto points = written_points(c.points, rational ? c.weights : std::vector<double>{}, p.homogeneous);
+  auto node = make_node("NurbsCurve");
+  if (dialect == VrmlDialect::vrml97) node->set("controlPoint", MFVec3f{points}, with_digits(t.control_point, p));
+  node->set("knot", MFFloat{c.knots}, knot_precision(c.knots, t.knot, p.significant_digits));
+  node->set("order", c.order);
+  if (rational) node->set("weight", MFFloat{c.weights}, with_digits(t.weight, p));
+  if (dialect == VrmlDialect::x3d)
+    node->set("controlPoint", SFNode{coordinate_node(dialect, points, with_digits(t.control_point, p))});
+  return node;
+}
+
+NodePtr mesh_node(const TriangleMesh& mesh, VrmlDialect dialect, const GeometryPrecision& p) {
+  auto node = make_node("IndexedFaceSet");
+  node->set("coord", SFNode{coordinate_node(dialect, mesh.positions, with_digits(p.coordinate_tolerance, p))});
+  MFInt32 indices;
+  indices.values.reserve(mesh.triangles.size() * 4);
+  for (const auto& t : mesh.triangles) indices.values.insert(indices.values.end(), {t[0], t[1], t[2], -1});
+  node->set("coordIndex", std::move(indices));
+  if (!mesh.corner_normals.empty()) {
+    // Corners share a written normal when their normals are equal: smooth regions store each once.
+    std::map<std::array<double, 3>, int> index_of;
+    MFVec3f vectors;
+    MFInt32 normal_indices;
+    for (size_t corner = 0; corner < mesh.corner_normals.size(); ++corner) {
+      const auto& n = mesh.corner_normals[corner];
+      const auto [it, inserted] = index_of.try_emplace({n.x(), n.y(), n.z()}, static_cast<int>(vectors.values.size()));
+      if (inserted) vectors.values.push_back(n);
+      normal_indices.values.push_back(it->second);
+      if (corner % 3 == 2) normal_indices.values.push_back(-1);
+    }
+    auto normal = make_node("Normal");
+    normal->set("vector", std::move(vectors), with_digits(normal_tolerance, p));
+    node->set("normal", SFNode{normal});
+    node->set("normalIndex", std::move(normal_indices));
+    node->set("normalPerVertex", true);
+  } else {
+    // Without normals the viewer makes them: smooth across edges below ~29 degrees, creased above.
+    node->set("creaseAngle", 0.5, NumberPrecision{});
+  }
+  node->set("solid", false);
+  return node;
+}
+
+}  // namespace
+
+NumberPrecision knot_precision(const std::vector<double>& knots, double tolerance, int significant_digits) {
+  auto keeps_order = [&](const NumberPrecision& precision) {
+    for (size_t i = 0; i + 1 < knots.size(); ++i) {
+      const double a = written_value(knots[i], precision), b = written_value(knots[i + 1], precision);
+      if ((knots[i] < knots[i + 1]) != (a < b) || a > b) return false;
+    }
+    return true;
+  };
+  NumberPrecision precision{tolerance, significant_digits};
+  for (int attempt = 0; attempt < 40 && !keeps_order(precision); ++attempt) {
+    if (precision.significant_digits > 0)
+      precision.significant_digits = std::min(17, precision.significant_digits + 1);
+    else
+      precision.tolerance *= 0.1;
+    if (precision.significant_digits == 17 || precision.tolerance < 1e-300) return NumberPrecision{};
+  }
+  return keeps_order(precision) ? precision : NumberPrecision{};
+}
+
+NodePtr geometry_node(const Geometry& geometry, VrmlDialect dialect, const GeometryPrecision& precision) {
+  if (const auto* trimmed = std::get_if<TrimmedSurface>(&geometry)) return surface_node(*trimmed, dialect, precision);
+  if (const auto* curve = std::get_if<NurbsCurve>(&geometry)) return curve_node(*curve, dialect, precision);
+  return mesh_node(std::get<TriangleMesh>(geometry), dialect, precision);
+}
+
+}  // namespace cadnurbs

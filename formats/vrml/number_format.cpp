@@ -1,0 +1,116 @@
+#include "formats/vrml/number_format.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+#include <system_error>
+
+namespace cadnurbs {
+
+namespace {
+
+// A decimal number d1.d2d3...dk x 10^exponent; `digits` has no trailing zeros ("0" for zero).
+struct Decimal {
+  bool negative = false;
+  std::string digits;
+  int exponent = 0;
+};
+
+// Splits std::to_chars' scientific text ("-1.2340e+05") into a Decimal.
+Decimal decimal_from_scientific(const char* first, const char* last) {
+  Decimal d;
+  const char* p = first;
+  if (p != last && *p == '-') {
+    d.negative = true;
+    ++p;
+  }
+  for (; p != last && *p != 'e'; ++p)
+    if (*p != '.') d.digits.push_back(*p);
+  if (p != last) std::from_chars(p + (p[1] == '+' ? 2 : 1), last, d.exponent);
+  while (d.digits.size() > 1 && d.digits.back() == '0') d.digits.pop_back();
+  if (d.digits == "0") d.negative = false;  // never "-0"
+  return d;
+}
+
+// Scientific rendering with `significant` digits, or the shortest round trip when significant == 0.
+Decimal round_to(double value, int significant) {
+  char buffer[64];
+  const auto result = significant > 0
+                          ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific,
+                                          significant - 1)
+                          : std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific);
+  return decimal_from_scientific(buffer, result.ptr);
+}
+
+// Plain notation, or exponent notation where that is shorter (plain on a tie, it reads better).
+void append_decimal(std::string& out, const Decimal& d) {
+  if (d.digits == "0") {
+    out.push_back('0');
+    return;
+  }
+  const int k = static_cast<int>(d.digits.size());
+  std::string plain;
+  if (d.exponent >= k - 1) {
+    plain = d.digits + std::string(static_cast<size_t>(d.exponent - (k - 1)), '0');
+  } else if (d.exponent >= 0) {
+    plain = d.digits.substr(0, static_cast<size_t>(d.exponent) + 1) + "." +
+            d.digits.substr(static_cast<size_t>(d.exponent) + 1);
+  } else {
+    plain = "." + std::string(static_cast<size_t>(-d.exponent - 1), '0') + d.digits;
+  }
+  if (d.negative) out.push_back('-');
+  // Integers stay integers ("1000", not "1e3"): readable, and they rarely have many zeros
+  // (astronomic ones excepted).
+  if (d.exponent >= k - 1 && d.exponent < 21) {
+    out += plain;
+    return;
+  }
+  // Exponent form with an integer mantissa ("15e-7") is never longer than "1.5e-6".
+  const std::string exponential = d.digits + "e" + std::to_string(d.exponent - (k - 1));
+  out += exponential.size() < plain.size() ? exponential : plain;
+}
+
+double parse(const Decimal& d) {
+  const std::string text = (d.negative ? "-" : "") + d.digits.substr(0, 1) + "." + d.digits.substr(1) + "e" +
+                           std::to_string(d.exponent);
+  double value = 0.0;
+  std::from_chars(text.data(), text.data() + text.size(), value);
+  return value;
+}
+
+}  // namespace
+
+void append_number(std::string& out, double value, const NumberPrecision& precision) {
+  if (!std::isfinite(value)) throw std::invalid_argument("cannot write a number that is not finite");
+  if (precision.tolerance < 0.0 || !std::isfinite(precision.tolerance))
+    throw std::invalid_argument("number tolerance must be a finite value >= 0");
+  if (precision.significant_digits > 17)
+    throw std::invalid_argument("at most 17 significant digits are meaningful for a double");
+  if (precision.significant_digits > 0) {
+    append_decimal(out, round_to(value, precision.significant_digits));
+    return;
+  }
+  if (precision.tolerance > 0.0) {
+    if (std::abs(value) <= precision.tolerance) {
+      out.push_back('0');
+      return;
+    }
+    // Fewer significant digits never give a longer text, so the first that fits is the shortest.
+    for (int k = 1; k <= 17; ++k) {
+      const Decimal d = round_to(value, k);
+      if (std::abs(parse(d) - value) <= precision.tolerance) {
+        append_decimal(out, d);
+        return;
+      }
+    }
+  }
+  append_decimal(out, round_to(value, 0));
+}
+
+std::string format_number(double value, const NumberPrecision& precision) {
+  std::string out;
+  append_number(out, value, precision);
+  return out;
+}
+
+}  // namespace cadnurbs

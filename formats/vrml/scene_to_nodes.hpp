@@ -1,0 +1,30 @@
+#pragma once
+// A Scene as a VRML97 or X3D node graph (the mapping shared by all three encodings):
+//   WorldInfo { title, info (world_info.hpp) }, NavigationInfo { type ["EXAMINE" "ANY"] headlight TRUE },
+//   Viewpoint, then the root SceneNode.
+// Each SceneNode becomes a Transform (translation, rotation, scale, scaleOrientation from its affine map)
+// or a plain Group when its transform is the identity within the written precision; its shapes come
+// first among the children, then its child nodes. DEF names come from the names (vrml_identifier.hpp).
+// Each Shape is Shape { appearance Appearance { material Material {...} } geometry ... }:
+//   - a shape with its own colour: an Appearance of its own (diffuseColor; emissiveColor for curves,
+//     which viewers draw unlit);
+//   - a shape inheriting a node's colour: the Appearance "DEF <nodeDEF>_colour" (curves:
+//     "<nodeDEF>_line_colour"), written once and USE'd after, which is how a reader finds the node's
+//     colour again;
+//   - no colour anywhere: Material {} (surfaces, meshes), no Appearance (curves).
+// A node colour that no shape inherits has no effect and is not written.
+#include "core/scene.hpp"
+#include "formats/vrml/vrml_write_options.hpp"
+#include "formats/vrml/x3d_node.hpp"
+
+namespace cadnurbs {
+
+// The node graph for `scene` (expected valid; see core validate). Throws GeometryError naming the node
+// whose transform is singular or not finite.
+NodeDocument scene_to_nodes(const Scene& scene, const VrmlWriteOptions& options);
+
+// The coordinate tolerance the options stand for: options.coordinate_tolerance, or 1e-6 × the bounding-box
+// diagonal of the scene (1e-6 for an empty or point-sized scene).
+double effective_coordinate_tolerance(const Scene& scene, const VrmlWriteOptions& options);
+
+}  // namespace cadnurbs

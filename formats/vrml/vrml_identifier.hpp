@@ -1,0 +1,25 @@
+#pragma once
+// DEF names: node and shape names turned into identifiers legal in VRML97, X3D classic and X3D XML
+// (an XML ID too), unique within one file.
+#include <set>
+#include <string>
+
+namespace cadnurbs {
+
+// `name` with every character outside [A-Za-z0-9_-] replaced by '_' (one per UTF-8 sequence), a '_'
+// in front of a leading digit or '-', and a '_' after a reserved word (TRUE, ROUTE, field...).
+// An empty name gives "_".
+std::string sanitised_identifier(const std::string& name);
+
+// Hands out identifiers that are unique within one file.
+class IdentifierRegistry {
+ public:
+  // sanitised_identifier(wanted), with "_2", "_3"... appended until it is unused; marks it used.
+  std::string claim(const std::string& wanted);
+  bool is_taken(const std::string& identifier) const { return taken_.count(identifier) != 0; }
+
+ private:
+  std::set<std::string> taken_;
+};
+
+}  // namespace cadnurbs

@@ -1,0 +1,36 @@
+#pragma once
+// What a VRML/X3D writer is asked for: encoding, control point convention, precision, camera, title.
+#include <optional>
+#include <string>
+
+#include "formats/vrml/viewpoint.hpp"
+#include "formats/vrml/x3d_node.hpp"
+
+namespace cadnurbs {
+
+enum class VrmlEncoding { vrml97, x3d_classic, x3d_xml };
+
+struct VrmlWriteOptions {
+  VrmlEncoding encoding = VrmlEncoding::x3d_classic;
+  // controlPoint as w·P (what the viewers expect, see DESIGN.md) or as Euclidean P.
+  bool homogeneous_control_points = true;
+  // Absolute, in model units, per coordinate of the evaluated geometry; 0: 1e-6 × the scene's
+  // bounding-box diagonal. Weights, knots and trims get tolerances derived from it (nurbs_tolerances.hpp).
+  double coordinate_tolerance = 0.0;
+  // > 0: every number with this many significant digits (the CLI's --precision N), overriding the
+  // tolerances; knot vectors still get more digits where fewer would merge or reorder knots.
+  int significant_digits = 0;
+  // VRML97 only: paste the PROTO definitions instead of EXTERNPROTO declarations.
+  bool self_contained = false;
+  // VRML97 only: where EXTERNPROTO declarations point after the URNs ("<protos_url>#<Name>").
+  std::string protos_url = "cadnurbs-nurbs-protos.wrl";
+  // The camera; empty: framing_viewpoint of the scene's bounding box.
+  std::optional<Viewpoint> viewpoint;
+  // WorldInfo title; empty: the root node's name, if any.
+  std::string title;
+};
+
+// VRML97 for .wrl, X3D for both X3D encodings.
+VrmlDialect dialect_of(VrmlEncoding encoding);
+
+}  // namespace cadnurbs

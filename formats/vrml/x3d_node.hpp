@@ -1,0 +1,72 @@
+#pragma once
+// A small generic VRML/X3D node graph: the one form between the Scene mapping and the text encodings,
+// so that Scene <-> nodes is written once and VRML97, X3D classic and X3D XML differ only in spelling.
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "formats/vrml/number_format.hpp"
+
+namespace cadnurbs {
+
+struct Node;
+using NodePtr = std::shared_ptr<Node>;
+
+// Field values. Single precision VRML types (SFFloat, MFFloat, MFVec3f...) and their X3D double
+// counterparts (SFDouble, MFDouble, MFVec3d...) share one alternative: values are doubles either way.
+struct MFFloat { std::vector<double> values; };
+struct MFInt32 { std::vector<int> values; };
+struct MFVec2f { std::vector<Eigen::Vector2d> values; };
+struct MFVec3f { std::vector<Eigen::Vector3d> values; };
+struct MFString { std::vector<std::string> values; };
+struct SFColor { Eigen::Vector3d value = Eigen::Vector3d::Zero(); };
+struct SFVec3f { Eigen::Vector3d value = Eigen::Vector3d::Zero(); };
+struct SFRotation { Eigen::Vector3d axis = Eigen::Vector3d::UnitZ(); double angle = 0.0; };
+struct SFNode { NodePtr node; };  // null: NULL
+struct MFNode { std::vector<NodePtr> nodes; };
+
+using FieldValue = std::variant<bool, int, double, std::string, MFFloat, MFInt32, MFVec2f, MFVec3f, MFString,
+                                SFColor, SFVec3f, SFRotation, SFNode, MFNode>;
+
+struct Field {
+  std::string name;
+  FieldValue value;
+  NumberPrecision precision;  // how the numbers of this field are written
+  int line = 0;               // where it was read (0 for fields built in memory)
+};
+
+struct Node {
+  std::string type;      // "Transform", "NurbsPatchSurface"...
+  std::string def_name;  // empty unless DEF'd; a node reached twice in a graph is written once, then USE'd
+  std::vector<Field> fields;  // in writing order
+  int line = 0;               // where it was read (0 for nodes built in memory)
+
+  // The field called `name`, or null.
+  const Field* find(std::string_view name) const;
+
+  // The value of field `name` when it holds a T; null when the field is absent or holds another type.
+  template <class T>
+  const T* get(std::string_view name) const {
+    const Field* field = find(name);
+    return field ? std::get_if<T>(&field->value) : nullptr;
+  }
+
+  // Appends a field (or replaces the value of an existing one of that name).
+  void set(std::string name, FieldValue value, NumberPrecision precision = {});
+};
+
+// A new node of `type`, DEF'd as `def_name` when that is not empty.
+NodePtr make_node(std::string type, std::string def_name = {});
+
+// A file's worth of nodes: the dialect decides the NURBS node names and field types.
+enum class VrmlDialect { vrml97, x3d };
+
+struct NodeDocument {
+  VrmlDialect dialect = VrmlDialect::x3d;
+  std::vector<NodePtr> roots;  // top-level nodes in file order
+};
+
+}  // namespace cadnurbs

@@ -1,0 +1,139 @@
+// The cadnurbs command as a user runs it: exit codes, messages, files written and not written.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "formats/common/file_io.hpp"
+#include "samples/capping_shapes.hpp"
+
+namespace fs = std::filesystem;
+using namespace cadnurbs;
+
+namespace {
+
+struct CommandResult {
+  int status;
+  std::string out, err;
+};
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("cadnurbs_cli_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  CommandResult run(const std::string& arguments) {
+    const std::string out = (dir_ / "stdout.txt").string(), err = (dir_ / "stderr.txt").string();
+    const int status = std::system((std::string(CADNURBS_EXE) + " " + arguments + " >" + out + " 2>" + err).c_str());
+    return {WEXITSTATUS(status), read_file(out), read_file(err)};
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(Cli, CappingRegeneratesTheCommittedSamplesByteForByte) {
+  const CommandResult r = run("capping --shape all -o " + path("gen") + "/");
+  ASSERT_EQ(r.status, 0) << r.err;
+  int compared = 0;
+  for (const auto& name : capping_shape_names())
+    for (const char* ext : {".wrl", ".x3dv", ".x3d", ".stl"}) {
+      const std::string committed = std::string(CADNURBS_SOURCE_DIR) + "/samples/" + name + ext;
+      EXPECT_EQ(read_file(path("gen/" + name + ext)), read_file(committed)) << committed;
+      ++compared;
+    }
+  EXPECT_EQ(read_file(path("gen/cadnurbs-nurbs-protos.wrl")),
+            read_file(std::string(CADNURBS_SOURCE_DIR) + "/samples/cadnurbs-nurbs-protos.wrl"));
+  EXPECT_EQ(compared, 12);
+}
+
+TEST_F(Cli, DemoPrintsTheThesisCountsAndTheFilesItWrote) {
+  const CommandResult r = run("demo -o " + path("demo"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  // capping-90: body 21 x 7 points + two 2 x 2 lids = 155 control points; knots 24 + 10 + 2 x 8 = 50;
+  // floats 4 x 155 + 50 = 670.
+  EXPECT_NE(r.out.find("capping-90            3         155      50          670"), std::string::npos) << r.out;
+  for (const auto& name : capping_shape_names())
+    for (const char* ext : {".wrl", ".x3dv", ".x3d", ".stl"}) {
+      const std::string file = path("demo/" + name + ext);
+      EXPECT_TRUE(fs::exists(file)) << file;
+      EXPECT_NE(r.out.find(file), std::string::npos) << file;
+    }
+}
+
+TEST_F(Cli, MissingInputIsOneLineNamingTheFile) {
+  const CommandResult r = run("convert " + path("nothing.stl") + " -o " + path("out.wrl"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "cadnurbs convert: " + path("nothing.stl") + ": cannot open (No such file or directory)\n");
+  EXPECT_FALSE(fs::exists(path("out.wrl")));
+}
+
+TEST_F(Cli, TruncatedStlFailsWithTheTriangleAndWritesNothing) {
+  const std::string full = read_file(std::string(CADNURBS_SHARED_DIR) + "/corpus/stl/featuretype.STL");
+  std::ofstream(path("cut.stl"), std::ios::binary) << full.substr(0, 5101);
+  const CommandResult r = run("convert " + path("cut.stl") + " -o " + path("out.x3dv"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("triangle 101 of 3476"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+  EXPECT_FALSE(fs::exists(path("out.x3dv")));
+  for (const auto& entry : fs::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+TEST_F(Cli, UnknownOptionIsAUsageError) {
+  const CommandResult r = run("convert a.stl -o b.wrl --colour red");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "cadnurbs convert: convert: unknown option '--colour' (see cadnurbs convert --help)\n");
+}
+
+TEST_F(Cli, OutputNeverOverwritesTheInput) {
+  ASSERT_EQ(run("capping --shape capping-post -o " + path("post.wrl")).status, 0);
+  const std::string before = read_file(path("post.wrl"));
+  const CommandResult r = run("convert " + path("post.wrl") + " -o " + path("post.wrl"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(read_file(path("post.wrl")), before);
+}
+
+TEST_F(Cli, EverySubcommandHasHelp) {
+  for (const char* command : {"convert", "info", "capping", "demo"}) {
+    const CommandResult r = run(std::string(command) + " --help");
+    EXPECT_EQ(r.status, 0) << command;
+    EXPECT_EQ(r.out.rfind("usage: cadnurbs " + std::string(command), 0), 0u) << command;
+  }
+}
+
+TEST_F(Cli, StlToVrmlMeshAndBackKeepsEveryTriangle) {
+  const std::string stl = std::string(CADNURBS_SHARED_DIR) + "/corpus/stl/plate_holes.STL";
+  ASSERT_EQ(run("convert " + stl + " -o " + path("plate.x3dv")).status, 0);
+  const CommandResult r = run("convert " + path("plate.x3dv") + " -o " + path("plate.stl"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(fs::file_size(path("plate.stl")), 84u + 50u * 1252u);
+}
+
+TEST_F(Cli, InfoListsTheCappingSurfaces) {
+  const CommandResult r = run("info " + std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-90.x3dv");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("body: NURBS surface, degree 2x2, 21x7 control points, 34 knots, rational, 0 trimming loops"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("lid-start: trimmed NURBS surface, degree 1x1, 2x2 control points, 8 knots, polynomial, 1 trimming loops"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST_F(Cli, MeshConversionWritesIndexedFaceSets) {
+  const std::string in = std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-90.x3dv";
+  const CommandResult r = run("convert " + in + " -o " + path("mesh.wrl") + " --mesh --steps 4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string text = read_file(path("mesh.wrl"));
+  EXPECT_NE(text.find("IndexedFaceSet"), std::string::npos);
+  EXPECT_EQ(text.find("NurbsSurface"), std::string::npos);
+}
