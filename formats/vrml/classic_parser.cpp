@@ -1,6 +1,7 @@
 #include "formats/vrml/classic_parser.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -146,7 +147,7 @@ class ClassicParser {
                            (dialect_ == VrmlDialect::vrml97 ? "VRML97" : "X3D") + " subset cadnurbs reads)");
     NodePtr node = make_node(token.text, def_name);
     node->line = token.line;
-    if (!def_name.empty()) defs_[def_name] = node;
+    if (++depth_ > max_depth) fail(token.line, "nodes nested deeper than " + std::to_string(max_depth) + " levels");
     expect(Kind::open_brace, "'{' after " + token.text);
     for (;;) {
       const ClassicToken field_name = next();
@@ -159,6 +160,9 @@ class ClassicParser {
       Field field{field_name.text, value(*type, field_name), {}, field_name.line};
       node->fields.push_back(std::move(field));
     }
+    --depth_;
+    // Known to USE only after its body: a node cannot contain itself.
+    if (!def_name.empty()) defs_[def_name] = node;
     return node;
   }
 
@@ -170,7 +174,10 @@ class ClassicParser {
     if (*first == '+') ++first;
     double value = 0.0;
     const auto result = std::from_chars(first, last, value);
-    if (result.ec == std::errc() && result.ptr == last) return value;
+    if (result.ec == std::errc() && result.ptr == last) {
+      if (!std::isfinite(value)) fail(token.line, "field " + field.text + ": '" + token.text + "' is not a finite number");
+      return value;
+    }
     // Hexadecimal integers (0x1F) are legal VRML too.
     const bool negative = *first == '-';
     const char* digits = first + (negative ? 1 : 0);
@@ -301,6 +308,9 @@ class ClassicParser {
   ClassicTokenizer tokens_;
   VrmlDialect dialect_ = VrmlDialect::x3d;
   std::map<std::string, NodePtr> defs_;
+  // Recursion guard: far deeper than any real scene, far shallower than the stack.
+  static constexpr int max_depth = 1000;
+  int depth_ = 0;
 };
 
 }  // namespace

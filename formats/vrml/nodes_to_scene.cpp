@@ -71,7 +71,14 @@ class SceneBuilder {
     return it != conventions_.names.end() ? it->second : node.def_name;
   }
 
+  // A USE is a copy in the Scene: nested USEs multiply; stop a file that multiplies without bound.
+  void count(const Node& node) {
+    if (++expanded_ > max_expanded)
+      fail(node, "DEF/USE expand to more than " + std::to_string(max_expanded) + " nodes and shapes");
+  }
+
   SceneNode scene_node(const Node& node, std::vector<Ancestor>& ancestors) {
+    count(node);
     SceneNode out;
     out.name = name_of(node);
     if (node.type == "Transform") out.transform = transform(node);
@@ -139,6 +146,7 @@ class SceneBuilder {
   void add_shapes(SceneNode& parent, const Node& shape, std::vector<Ancestor>& ancestors) {
     const auto* geometry = shape.get<SFNode>("geometry");
     if (!geometry || !geometry->node) return;  // draws nothing
+    count(shape);
     Shape prototype;
     prototype.name = name_of(shape);
     apply_appearance(shape, prototype, ancestors);
@@ -152,6 +160,8 @@ class SceneBuilder {
   const std::string& file_;
   GeometryReadContext context_;
   WorldInfoConventions conventions_;
+  static constexpr long max_expanded = 1000000;
+  long expanded_ = 0;
 };
 
 }  // namespace

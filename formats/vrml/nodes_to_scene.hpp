@@ -9,6 +9,7 @@
 //   - Material diffuseColor (else emissiveColor) is the colour; an Appearance DEF'd "<A>_colour" or
 //     "<A>_line_colour" for an enclosing node DEF'd A gives A's colour, which the shape then inherits.
 //   - NavigationInfo and Viewpoint are read and ignored; a Shape without geometry is skipped.
+//   - A USE'd group or shape is copied; more than a million copies in all is refused.
 #include <string>
 
 #include "core/scene.hpp"

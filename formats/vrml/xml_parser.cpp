@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <map>
 
 #include "formats/common/file_io.hpp"
@@ -158,6 +159,8 @@ class XmlReader {
   XmlElement element() {
     XmlElement e;
     e.line = line_;
+    // Recursion guard: far deeper than any real scene, far shallower than the stack.
+    if (++depth_ > 1000) fail("elements nested deeper than 1000 levels");
     advance(1);  // '<'
     e.name = name_token();
     for (;;) {
@@ -165,6 +168,7 @@ class XmlReader {
       if (position_ >= text_.size()) fail("element <" + e.name + "> is not terminated", e.line);
       if (at("/>")) {
         advance(2);
+        --depth_;
         return e;
       }
       if (text_[position_] == '>') {
@@ -200,6 +204,7 @@ class XmlReader {
         skip_space();
         if (!at(">")) fail("expected '>' after </" + closing);
         advance(1);
+        --depth_;
         return e;
       }
       e.children.push_back(element());
@@ -210,6 +215,7 @@ class XmlReader {
   const std::string& name_;
   size_t position_ = 0;
   int line_ = 1;
+  int depth_ = 0;
 };
 
 // Elements to nodes: the X3D layer.
@@ -243,7 +249,6 @@ class X3dBuilder {
     for (const auto& a : e.attributes) {
       if (a.name == "DEF") {
         node->def_name = a.value;
-        defs_[a.value] = node;
         continue;
       }
       if (a.name == "containerField" || a.name == "class") continue;
@@ -282,6 +287,8 @@ class X3dBuilder {
         std::get<MFNode>(field->value).nodes.push_back(child);
       }
     }
+    // Known to USE only after its children: a node cannot contain itself.
+    if (!node->def_name.empty()) defs_[node->def_name] = node;
     return node;
   }
 
@@ -298,8 +305,8 @@ class X3dBuilder {
       const char* first = s.data() + i + (s[i] == '+' ? 1 : 0);
       double v = 0.0;
       const auto r = std::from_chars(first, s.data() + j, v);
-      if (r.ec != std::errc() || r.ptr != s.data() + j)
-        reader_.fail("field " + a.name + ": '" + s.substr(i, j - i) + "' is not a number", a.line);
+      if (r.ec != std::errc() || r.ptr != s.data() + j || !std::isfinite(v))
+        reader_.fail("field " + a.name + ": '" + s.substr(i, j - i) + "' is not a finite number", a.line);
       out.push_back(v);
       i = j;
     }

@@ -23,6 +23,11 @@ struct Case {
   bool homogeneous;
 };
 
+// Without it GoogleTest prints the struct's bytes, padding included, into the test names.
+void PrintTo(const Case& c, std::ostream* out) {
+  *out << static_cast<int>(c.encoding) << (c.homogeneous ? " homogeneous" : " euclidean");
+}
+
 class RoundTrip : public ::testing::TestWithParam<Case> {
  protected:
   VrmlWriteOptions options() const {
@@ -69,6 +74,22 @@ TEST_P(RoundTrip, RationalSpaceCurve) {
   if (GetParam().encoding == VrmlEncoding::vrml97 && !library_has("NurbsCurve"))
     GTEST_SKIP() << "the NURBS PROTO library has no NurbsCurve";
   round_trip(vrml_test::single_shape_scene(vrml_test::semicircle_curve()), options());
+}
+
+TEST_P(RoundTrip, EmptySceneAndUnnamedColouredNodes) {
+  round_trip(Scene{}, options());
+  // An unnamed coloured node gets a generated DEF so its shapes can point at its colour; the name
+  // comes back empty.
+  Scene scene;
+  scene.root.colour = Colour{0.5, 0.25, 1};
+  SceneNode child;
+  child.colour = Colour{0, 0, 0};
+  child.shapes.push_back(Shape{"", TrimmedSurface{vrml_test::quarter_cylinder(), {}}, std::nullopt});
+  child.shapes.push_back(Shape{"", vrml_test::octahedron_with_normals(), std::nullopt});
+  scene.root.children.push_back(child);
+  scene.root.shapes.push_back(Shape{"", vrml_test::octahedron_with_normals(), Colour{1, 1, 0}});
+  scene.unit = LengthUnit{"inch", 25.4};
+  round_trip(scene, options());
 }
 
 TEST_P(RoundTrip, CoarseToleranceStillWithinIt) {

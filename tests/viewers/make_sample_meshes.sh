@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Writes, for every bundled capping, our own tessellation of the committed sample files, and the
+# swept body alone with its tessellation (for view3dscene, which ignores trimming).
+#   make_sample_meshes.sh CADNURBS SAMPLES_DIR OUT_DIR
+set -euo pipefail
+cadnurbs=$1 samples=$2 out=$3
+mkdir -p "$out"
+for shape in capping-90 capping-end capping-post; do
+  "$cadnurbs" convert "$samples/$shape.x3dv" -o "$out/$shape-mesh.x3dv" --mesh --steps 16
+  "$cadnurbs" convert "$samples/$shape.wrl" -o "$out/$shape-mesh.wrl" --mesh --steps 16
+  "$cadnurbs" capping --shape "$shape" --without-lids -o "$out/$shape-body.x3dv"
+  "$cadnurbs" convert "$out/$shape-body.x3dv" -o "$out/$shape-body-mesh.x3dv" --mesh --steps 16
+done
