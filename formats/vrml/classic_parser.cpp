@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "formats/common/file_io.hpp"
+#include "formats/vrml/parse_error.hpp"
 #include "formats/vrml/classic_tokenizer.hpp"
 #include "formats/vrml/node_schema.hpp"
 
@@ -34,7 +35,7 @@ class ClassicParser {
 
  private:
   [[noreturn]] void fail(int line, const std::string& reason) const {
-    throw FileError(name_ + ": line " + std::to_string(line) + ": " + reason);
+    throw_parse_error(name_, line, reason);
   }
 
   const ClassicToken& peek() {

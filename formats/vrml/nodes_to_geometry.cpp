@@ -7,7 +7,7 @@
 
 #include "core/geometry_error.hpp"
 #include "core/knot_vector.hpp"
-#include "formats/common/file_io.hpp"
+#include "formats/vrml/parse_error.hpp"
 
 namespace cadnurbs {
 
@@ -18,7 +18,7 @@ class GeometryReader {
   GeometryReader(const Node& node, const GeometryReadContext& context) : node_(node), context_(context) {}
 
   [[noreturn]] void fail(const Node& node, const std::string& reason) const {
-    throw FileError(context_.file + ": line " + std::to_string(node.line) + ": " + node.type + ": " + reason);
+    throw_parse_error(context_.file, node.line, node.type + ": " + reason);
   }
 
   std::vector<Geometry> read() {
@@ -50,7 +50,7 @@ class GeometryReader {
         validate(geometry, node.type);
       }
     } catch (const GeometryError& e) {
-      throw FileError(context_.file + ": line " + std::to_string(node.line) + ": " + e.what());
+      throw_parse_error(context_.file, node.line, e.what());
     }
     return geometry;
   }
@@ -138,7 +138,7 @@ class GeometryReader {
     try {
       validate(c, node.type);
     } catch (const GeometryError& e) {
-      throw FileError(context_.file + ": line " + std::to_string(node.line) + ": " + e.what());
+      throw_parse_error(context_.file, node.line, e.what());
     }
     return c;
   }

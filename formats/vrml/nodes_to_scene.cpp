@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "formats/common/file_io.hpp"
+#include "formats/vrml/parse_error.hpp"
 #include "formats/vrml/nodes_to_geometry.hpp"
 #include "formats/vrml/transform_fields.hpp"
 #include "formats/vrml/world_info.hpp"
@@ -52,7 +52,7 @@ class SceneBuilder {
   };
 
   [[noreturn]] void fail(const Node& node, const std::string& reason) const {
-    throw FileError(file_ + ": line " + std::to_string(node.line) + ": " + reason);
+    throw_parse_error(file_, node.line, reason);
   }
 
   void read_world_info(const Node& node) {

@@ -13,6 +13,10 @@
 //     colour again;
 //   - no colour anywhere: Material {} (surfaces, meshes), no Appearance (curves).
 // A node colour that no shape inherits has no effect and is not written.
+// Precision besides the geometry's: translations within τ (in the parent's units), rotation axes and
+// angles within τ/(4R) and scale factors within τ·s/(4R), R the largest distance from the node's origin
+// to a corner of the scene's box (first-order estimates); colours within 1/512; the Viewpoint within
+// 1e-6 (relative for the position) whatever the scene, so one camera is spelled alike in every file.
 #include "core/scene.hpp"
 #include "formats/vrml/vrml_write_options.hpp"
 #include "formats/vrml/x3d_node.hpp"

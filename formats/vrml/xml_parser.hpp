@@ -1,9 +1,8 @@
 #pragma once
-// Reads the X3D XML encoding into a node document, for the subset of node_schema.hpp. A small hand
-// parser for what X3D files use: the XML declaration, DOCTYPE, comments, elements with single- or
-// double-quoted attributes, the five named entities and numeric character references. <head> is skipped;
-// DEF/USE and containerField are honoured. CDATA (scripts), ROUTE, ProtoDeclare/ProtoInstance and any
-// node outside the subset are refused.
+// Reads the X3D XML encoding into a node document, for the subset of node_schema.hpp, on top of the
+// small XML reader of xml_markup.hpp. <head> is skipped; DEF/USE and containerField are honoured (a
+// missing containerField that names no node field of the parent falls back to "children"). ROUTE,
+// ProtoDeclare/ProtoInstance, Script and any other node outside the subset are refused.
 #include <string>
 
 #include "formats/vrml/x3d_node.hpp"

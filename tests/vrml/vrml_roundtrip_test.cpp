@@ -88,6 +88,7 @@ TEST_P(RoundTrip, EmptySceneAndUnnamedColouredNodes) {
   child.shapes.push_back(Shape{"", vrml_test::octahedron_with_normals(), std::nullopt});
   scene.root.children.push_back(child);
   scene.root.shapes.push_back(Shape{"", vrml_test::octahedron_with_normals(), Colour{1, 1, 0}});
+  scene.root.shapes.push_back(Shape{"", vrml_test::octahedron_with_normals(), std::nullopt});  // root's colour
   scene.unit = LengthUnit{"inch", 25.4};
   round_trip(scene, options());
 }
