@@ -147,10 +147,14 @@ Scene capping_nurbs(const CappingDefinition& capping) {
   return scene;
 }
 
-TriangleMesh capping_mesh(const CappingDefinition& capping, double max_chord_deviation) {
+TriangleMesh capping_mesh(const CappingDefinition& capping, double max_chord_deviation, bool with_lids) {
   const PathFrame frame{capping.path.plane == "xz"};
-  const auto path = sample_outline(capping.path, max_chord_deviation);
   auto ring = sample_outline(full_profile(capping.half_profile), max_chord_deviation);
+  // The path's arcs carry the profile out to its half width, where the same angle makes a
+  // longer chord: divide them for the outermost circle, so the bound holds on the whole surface.
+  double reach = 0;  // largest offset along the path plane's normal
+  for (const auto& rs : ring) reach = std::max(reach, std::abs(frame.vertical ? rs.point.y() : rs.point.x()));
+  const auto path = sample_outline(capping.path, max_chord_deviation, reach);
   ring.pop_back();  // closed: the last point repeats the first
   const int m = static_cast<int>(ring.size());
 
@@ -165,6 +169,7 @@ TriangleMesh capping_mesh(const CappingDefinition& capping, double max_chord_dev
       mesh.triangles.push_back({a, b, c});
       mesh.triangles.push_back({a, c, d});
     }
+  if (!with_lids) return mesh;
   // Lids: the ring polygon triangulated in the profile plane, oriented outward.
   std::vector<Eigen::Vector2d> polygon;
   for (const auto& rs : ring) polygon.push_back(rs.point);

@@ -24,8 +24,11 @@ CappingDefinition parse_capping(const std::string& name, const std::string& path
 Scene capping_nurbs(const CappingDefinition& capping);
 
 // The capping as triangles by the thesis's STL rule: lines kept straight, arcs divided so no chord
-// lies farther than max_chord_deviation from its arc; lids triangulated from the profile polygon.
-TriangleMesh capping_mesh(const CappingDefinition& capping, double max_chord_deviation);
+// lies farther than max_chord_deviation from its arc (path arcs measured at the profile's outermost
+// offset); lids triangulated from the profile polygon. Where an arc of the path meets an arc of the
+// profile the two chord errors add: the surface lies within 2 x max_chord_deviation of the mesh.
+// `with_lids` false: the swept body alone (open at the handrail connections).
+TriangleMesh capping_mesh(const CappingDefinition& capping, double max_chord_deviation, bool with_lids = true);
 
 // Exact geometry for checks: the point on the swept surface at path arc-parameter and profile
 // point, and the distance of any point to the exact swept body surface (not the lids).

@@ -176,7 +176,7 @@ double distance_to_segment(const OutlineSegment& s, const Eigen::Vector2d& q) {
   return (s.start + t * e - q).norm();
 }
 
-std::vector<OutlineSample> sample_outline(const Outline& outline, double max_chord_deviation) {
+std::vector<OutlineSample> sample_outline(const Outline& outline, double max_chord_deviation, double radius_margin) {
   std::vector<OutlineSample> out;
   for (size_t i = 0; i < outline.segments.size(); ++i) {
     const auto& s = outline.segments[i];
@@ -187,7 +187,7 @@ std::vector<OutlineSample> sample_outline(const Outline& outline, double max_cho
       continue;
     }
     // Sagitta of a chord over angle a: R (1 - cos(a/2)) <= d.
-    const double max_angle = 2.0 * std::acos(std::max(-1.0, 1.0 - max_chord_deviation / s.radius));
+    const double max_angle = 2.0 * std::acos(std::max(-1.0, 1.0 - max_chord_deviation / (s.radius + radius_margin)));
     const int n = std::max(1, static_cast<int>(std::ceil(std::abs(s.sweep) / max_angle - 1e-12)));
     const double a0 = std::atan2(s.start.y() - s.centre.y(), s.start.x() - s.centre.x());
     for (int k = i == 0 ? 0 : 1; k <= n; ++k) {

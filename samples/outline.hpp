@@ -47,10 +47,13 @@ double angle_along_arc(const OutlineSegment& arc, const Eigen::Vector2d& q);
 double distance_to_segment(const OutlineSegment& segment, const Eigen::Vector2d& q);
 
 // Points along the outline: lines by their ends, arcs divided so that no chord is farther than
-// `max_chord_deviation` from its arc (the thesis's STL rule). Each point with its unit left normal.
+// `max_chord_deviation` from its arc (the thesis's STL rule), taken on a circle `radius_margin`
+// larger than the arc (so that a profile swept at up to that offset keeps the bound too).
+// Each point with its unit left normal.
 struct OutlineSample {
   Eigen::Vector2d point, left_normal;
 };
-std::vector<OutlineSample> sample_outline(const Outline& outline, double max_chord_deviation);
+std::vector<OutlineSample> sample_outline(const Outline& outline, double max_chord_deviation,
+                                         double radius_margin = 0.0);
 
 }  // namespace cadnurbs

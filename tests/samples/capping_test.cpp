@@ -106,6 +106,24 @@ TEST_P(Capping, MeshIsClosed) {
   EXPECT_EQ(nonmanifold, 0);
 }
 
+// Chords keep the bound along each arc; where path and profile arcs cross the errors add (2 d).
+TEST_P(Capping, MeshStaysWithinTwiceTheChordDeviationOfTheSurface) {
+  const CappingDefinition def = bundled_capping(GetParam());
+  for (double d : {1.0, 0.1}) {
+    const TriangleMesh mesh = capping_mesh(def, d, false);
+    double worst = 0;
+    for (const auto& t : mesh.triangles) {
+      const Eigen::Vector3d &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+      for (const Eigen::Vector3d& p : {Eigen::Vector3d((a + b) / 2), Eigen::Vector3d((b + c) / 2),
+                                       Eigen::Vector3d((c + a) / 2), Eigen::Vector3d((a + b + c) / 3)}) {
+        worst = std::max(worst, distance_to_swept_surface(def, p));
+      }
+    }
+    EXPECT_LE(worst, 2 * d) << d;
+    EXPECT_GT(worst, 0.25 * d) << d;
+  }
+}
+
 TEST_P(Capping, CoarserChordDeviationGivesFewerTriangles) {
   const CappingDefinition def = bundled_capping(GetParam());
   EXPECT_LT(capping_mesh(def, 1.0).triangles.size(), capping_mesh(def, 0.1).triangles.size());
