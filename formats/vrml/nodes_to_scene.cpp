@@ -91,6 +91,13 @@ class SceneBuilder {
   }
 
   void add_child(SceneNode& parent, const Node& child, std::vector<Ancestor>& ancestors) {
+    // An unnamed NurbsGroup only gathers the NURBS shapes of its parent (as the writer makes it).
+    if (child.type == "NurbsGroup" && child.def_name.empty()) {
+      if (const auto* children = child.get<MFNode>("children"))
+        for (const auto& grandchild : children->nodes)
+          if (grandchild) add_child(parent, *grandchild, ancestors);
+      return;
+    }
     if (is_grouping(child)) parent.children.push_back(scene_node(child, ancestors));
     else if (child.type == "Shape") add_shapes(parent, child, ancestors);
     else if (!is_ignored(child)) fail(child, child.type + " cannot stand among the children of a group");

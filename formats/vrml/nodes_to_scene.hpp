@@ -5,7 +5,8 @@
 //     convention, DEF names as names.
 //   - One top-level Transform/Group/NurbsGroup and nothing else is the root node; otherwise an unnamed
 //     root holds the top-level shapes and groups.
-//   - Transform/Group/NurbsGroup -> SceneNode (name from DEF), Shape -> Shape(s) (nodes_to_geometry.hpp).
+//   - Transform/Group/NurbsGroup -> SceneNode (name from DEF), Shape -> Shape(s) (nodes_to_geometry.hpp);
+//     a NurbsGroup without DEF (as the writer makes it) gives its shapes to the enclosing node.
 //   - Material diffuseColor (else emissiveColor) is the colour; an Appearance DEF'd "<A>_colour" or
 //     "<A>_line_colour" for an enclosing node DEF'd A gives A's colour, which the shape then inherits.
 //   - NavigationInfo and Viewpoint are read and ignored; a Shape without geometry is skipped.

@@ -78,6 +78,16 @@ class SceneMapper {
     const double stretch = std::max(world.linear().jacobiSvd().singularValues()(0), 1e-300);
     const GeometryPrecision precision{tau_ / stretch, options_.significant_digits, options_.homogeneous_control_points};
     MFNode children;
+    // VRML97: the NURBS surfaces of one node go into a NurbsGroup (blaxxun proposal), which lets a
+    // browser tessellate them together; X3D has no grouping equivalent (NurbsSet holds geometry only).
+    int surfaces = 0;
+    for (const auto& shape : node.shapes) surfaces += std::holds_alternative<TrimmedSurface>(shape.geometry);
+    NodePtr nurbs_group;
+    if (dialect_ == VrmlDialect::vrml97 && surfaces >= 2) {
+      nurbs_group = make_node("NurbsGroup");
+      children.nodes.push_back(nurbs_group);
+    }
+    MFNode grouped;
     for (const auto& shape : node.shapes) {
       auto shape_node = make_node("Shape");
       auto def = shape_defs_.find(&shape);
@@ -85,8 +95,9 @@ class SceneMapper {
       const bool line = std::holds_alternative<NurbsCurve>(shape.geometry);
       if (NodePtr appearance = appearance_for(shape, line, owners)) shape_node->set("appearance", SFNode{appearance});
       shape_node->set("geometry", SFNode{geometry_node(shape.geometry, dialect_, precision)});
-      children.nodes.push_back(shape_node);
+      (nurbs_group ? grouped : children).nodes.push_back(shape_node);
     }
+    if (nurbs_group) nurbs_group->set("children", std::move(grouped));
     for (size_t i = 0; i < node.children.size(); ++i) {
       const auto& child = node.children[i];
       children.nodes.push_back(

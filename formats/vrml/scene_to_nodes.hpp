@@ -5,6 +5,7 @@
 // Each SceneNode becomes a Transform (translation, rotation, scale, scaleOrientation from its affine map)
 // or a plain Group when its transform is the identity within the written precision; its shapes come
 // first among the children, then its child nodes. DEF names come from the names (vrml_identifier.hpp).
+// VRML97: when a node has two or more NURBS surfaces, its shapes go into one NurbsGroup (no DEF).
 // Each Shape is Shape { appearance Appearance { material Material {...} } geometry ... }:
 //   - a shape with its own colour: an Appearance of its own (diffuseColor; emissiveColor for curves,
 //     which viewers draw unlit);

@@ -57,3 +57,15 @@ INSTANTIATE_TEST_SUITE_P(Samples, SampleRoundTrip,
                            for (auto& c : n) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return n;
                          });
+
+TEST(SampleFiles, Vrml97GroupsTheCappingSurfacesInOneNurbsGroup) {
+  const std::string text = read_file(std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-90.wrl");
+  size_t groups = 0;
+  for (size_t at = text.find("NurbsGroup {"); at != std::string::npos; at = text.find("NurbsGroup {", at + 1)) ++groups;
+  EXPECT_EQ(groups, 1u);
+  EXPECT_NE(text.find("EXTERNPROTO NurbsGroup ["), std::string::npos);
+  // Read back, the three surfaces belong to the capping node again.
+  const Scene scene = read_scene(std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-90.wrl");
+  EXPECT_EQ(scene.root.shapes.size(), 3u);
+  EXPECT_TRUE(scene.root.children.empty());
+}
