@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "converters/scene_io.hpp"
+#include "formats/common/file_io.hpp"
 #include "core/bounding_box.hpp"
 #include "samples/capping_shapes.hpp"
 
