@@ -65,6 +65,7 @@ TrimLoop reversed(const TrimLoop& loop) {
       out.segments.emplace_back(std::move(p));
     }
   }
+  for (auto it = loop.edges.rbegin(); it != loop.edges.rend(); ++it) out.edges.push_back({it->edge, !it->reversed});
   return out;
 }
 
@@ -74,6 +75,9 @@ void validate(const TrimmedSurface& trimmed, const std::string& entity, double c
     const std::string loop_name = entity + " loop " + std::to_string(l);
     const auto& loop = trimmed.loops[l];
     if (loop.segments.empty()) throw GeometryError(loop_name, "has no segments");
+    if (!loop.edges.empty() && loop.edges.size() != loop.segments.size())
+      throw GeometryError(loop_name, std::to_string(loop.edges.size()) + " edge references for " +
+                                         std::to_string(loop.segments.size()) + " segments");
     for (size_t s = 0; s < loop.segments.size(); ++s) {
       const std::string seg_name = loop_name + " segment " + std::to_string(s);
       if (const auto* c = std::get_if<NurbsCurve>(&loop.segments[s])) {

@@ -18,8 +18,17 @@ struct Polyline2D {
 // One piece of a loop: a 2D NURBS curve (dimension 2) or a polyline.
 using TrimSegment = std::variant<NurbsCurve, Polyline2D>;
 
+// Which model edge a trim segment lies on, so that faces sharing an edge can be tessellated with the
+// same points there (a watertight mesh). `reversed`: the segment runs against the edge's direction.
+struct TrimEdgeRef {
+  int edge = -1;  // scene-wide edge number; -1: not shared with anything
+  bool reversed = false;
+  bool operator==(const TrimEdgeRef&) const = default;
+};
+
 struct TrimLoop {
   std::vector<TrimSegment> segments;  // each ends where the next starts; the last ends at the first's start
+  std::vector<TrimEdgeRef> edges;     // empty, or one per segment
 };
 
 struct TrimmedSurface {

@@ -30,6 +30,25 @@ TEST(TrimmedSurface, SquareLoopIsClosedAndCounterClockwise) {
   validate(plane_with(loop), "lid");
 }
 
+TEST(TrimmedSurface, ReversingALoopReversesItsEdgeReferences) {
+  TrimLoop loop = unit_square_loop();
+  loop.edges = {{3, false}, {7, true}};
+  const TrimLoop r = reversed(loop);
+  EXPECT_EQ(r.edges, (std::vector<TrimEdgeRef>{{7, false}, {3, true}}));
+  EXPECT_EQ(segment_start(r.segments[0]), segment_end(loop.segments[1]));
+}
+
+TEST(TrimmedSurface, RefusesEdgeReferenceCountMismatch) {
+  TrimLoop loop = unit_square_loop();
+  loop.edges = {{1, false}};
+  try {
+    validate(plane_with(loop), "face 4");
+    FAIL();
+  } catch (const GeometryError& e) {
+    EXPECT_STREQ(e.what(), "face 4 loop 0: 1 edge references for 2 segments");
+  }
+}
+
 TEST(TrimmedSurface, RefusesOpenLoop) {
   TrimLoop loop = unit_square_loop();
   std::get<Polyline2D>(loop.segments[1]).points.back() = {0.1, 0.2};
