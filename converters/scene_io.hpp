@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/scene.hpp"
+#include "formats/brep/brep_translation.hpp"
 #include "formats/vrml/vrml_writer.hpp"
 
 namespace cadnurbs {
@@ -16,11 +17,23 @@ struct SceneWriteOptions {
   std::string title;
 };
 
-// .stl (ASCII or binary), .wrl, .x3dv, .x3d. Throws FileError/GeometryError with a one-line message.
+// A scene as read, with the faces a B-rep reader had to write as meshes.
+struct LoadedScene {
+  Scene scene;
+  std::vector<FaceFallback> fallbacks;  // STEP/IGES only
+  int face_count = 0;                   // STEP/IGES: faces in the source
+  std::vector<bool> degenerated_edges;  // STEP/IGES: by TrimEdgeRef::edge
+};
+
+// .step/.stp, .iges/.igs, .stl (ASCII or binary), .wrl, .x3dv, .x3d. Throws FileError/GeometryError
+// with a one-line message.
+LoadedScene load_scene(const std::string& path, bool homogeneous_control_points = true);
+
+// load_scene(...).scene.
 Scene read_scene(const std::string& path, bool homogeneous_control_points = true);
 
-// .wrl, .x3dv, .x3d take the scene as it is; .stl takes meshes only (NURBS must be tessellated
-// first). Refuses an unknown extension. Writes atomically. For a VRML97 file that is not
+// .wrl, .x3dv, .x3d, .step/.stp, .iges/.igs take the scene as it is; .stl and .ply take meshes only
+// (NURBS must be tessellated first). Refuses an unknown extension. Writes atomically. For a VRML97 file that is not
 // self-contained, also writes the PROTO library beside it when it is missing.
 void write_scene(const std::string& path, const Scene& scene, const SceneWriteOptions& options);
 

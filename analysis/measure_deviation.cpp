@@ -1,0 +1,389 @@
+#include "analysis/measure_deviation.hpp"
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <thread>
+
+#include "analysis/point_in_loops.hpp"
+#include "analysis/point_inversion.hpp"
+#include "analysis/sample_trim_segment.hpp"
+#include "analysis/surface_evaluator.hpp"
+#include "analysis/triangulate_polygon.hpp"
+#include "core/geometry_error.hpp"
+#include "core/knot_vector.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+using K = CGAL::Simple_cartesian<double>;
+using TriangleIt = std::vector<K::Triangle_3>::const_iterator;
+using TriangleTree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, TriangleIt>>>;
+using SegmentIt = std::vector<K::Segment_3>::const_iterator;
+using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, SegmentIt>>>;
+
+K::Point_3 cg(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
+Eigen::Vector3d eg(const K::Point_3& p) { return {p.x(), p.y(), p.z()}; }
+
+struct MeasuredFace {
+  TrimmedSurface trimmed;  // in world coordinates
+  std::unique_ptr<SurfaceEvaluator> eval;
+  std::unique_ptr<PointInLoops> region;
+};
+
+// A reference triangle: which face, and the (u,v) of its corners.
+struct ReferenceTriangle {
+  int face;
+  Eigen::Vector2d uv[3];
+};
+
+// A boundary piece: face, loop, segment and the parameter range of the chord.
+struct BoundaryPiece {
+  int face, loop, segment;
+  double t0, t1;
+};
+
+// Grid parameters of one direction: each knot span in steps about `spacing` long in 3D.
+std::vector<double> grid(const SurfaceEvaluator& e, bool along_u, double spacing, int cap) {
+  const NurbsSurface& s = e.surface();
+  const auto& knots = along_u ? s.u_knots : s.v_knots;
+  const int order = along_u ? s.u_order : s.v_order, count = along_u ? s.u_count : s.v_count;
+  std::vector<double> b;
+  for (const auto& km : knot_multiplicities(knots))
+    if (km.value >= knots[order - 1] && km.value <= knots[count]) b.push_back(km.value);
+  const double o0 = along_u ? s.v_start() : s.u_start(), o1 = along_u ? s.v_end() : s.u_end();
+  std::vector<double> out{b.front()};
+  for (size_t i = 0; i + 1 < b.size(); ++i) {
+    double longest = 0;
+    for (int k = 0; k <= 4; ++k) {
+      const double other = o0 + (o1 - o0) * k / 4;
+      double len = 0;
+      Eigen::Vector3d prev;
+      for (int m = 0; m <= 8; ++m) {
+        const double x = b[i] + (b[i + 1] - b[i]) * m / 8;
+        const Eigen::Vector3d p = along_u ? e.point(x, other) : e.point(other, x);
+        if (m > 0) len += (p - prev).norm();
+        prev = p;
+      }
+      longest = std::max(longest, len);
+    }
+    const int n = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, cap);
+    for (int m = 1; m < n; ++m) out.push_back(b[i] + (b[i + 1] - b[i]) * m / n);
+    out.push_back(b[i + 1]);
+  }
+  return out;
+}
+
+// Loops as dense (u,v) polygons with the segment and parameter of every point.
+struct DenseLoop {
+  std::vector<Eigen::Vector2d> uv;
+  std::vector<std::pair<int, double>> at;  // segment, t
+};
+
+// Every knot span (polyline piece) of every segment in pieces about `spacing` long in 3D.
+std::vector<DenseLoop> dense_loops(const TrimmedSurface& t, const SurfaceEvaluator& e, double spacing) {
+  std::vector<DenseLoop> out;
+  for (const auto& loop : t.loops) {
+    DenseLoop d;
+    for (size_t k = 0; k < loop.segments.size(); ++k) {
+      const TrimSegment& seg = loop.segments[k];
+      const auto breaks = segment_breaks(seg);
+      for (size_t i = 0; i + 1 < breaks.size(); ++i) {
+        double length = 0;
+        Eigen::Vector3d prev = Eigen::Vector3d::Zero();
+        for (int m = 0; m <= 8; ++m) {
+          const Eigen::Vector2d uv = segment_uv(seg, breaks[i] + (breaks[i + 1] - breaks[i]) * m / 8);
+          const Eigen::Vector3d p = e.point(uv.x(), uv.y());
+          if (m > 0) length += (p - prev).norm();
+          prev = p;
+        }
+        const int per = std::clamp(static_cast<int>(std::ceil(length / spacing)), 8, 4000);
+        for (int m = 0; m < per; ++m) {
+          const double tt = breaks[i] + (breaks[i + 1] - breaks[i]) * m / per;
+          d.uv.push_back(segment_uv(seg, tt));
+          d.at.emplace_back(static_cast<int>(k), tt);
+        }
+      }
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+class Measurer {
+ public:
+  Measurer(const TriangleMesh& mesh, std::vector<TrimmedSurface> surfaces, const DeviationOptions& options)
+      : mesh_(mesh) {
+    if (mesh.triangles.empty()) throw GeometryError("measure_deviation", "the mesh has no triangles");
+    spacing_ = options.spacing;
+    if (!(spacing_ > 0)) {
+      double total = 0;
+      for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) total += (mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm();
+      spacing_ = total / (3.0 * 3.0 * mesh.triangles.size());
+    }
+    for (size_t i = 0; i < surfaces.size(); ++i) {
+      validate(surfaces[i], "surface " + std::to_string(i));
+      auto f = std::make_unique<MeasuredFace>();
+      f->trimmed = std::move(surfaces[i]);
+      f->eval = std::make_unique<SurfaceEvaluator>(f->trimmed.surface);
+      faces_.push_back(std::move(f));
+    }
+    build_references();
+    for (const auto& t : mesh.triangles) {
+      const K::Triangle_3 tri(cg(mesh.positions[t[0]]), cg(mesh.positions[t[1]]), cg(mesh.positions[t[2]]));
+      if (!tri.is_degenerate()) mesh_triangles_.push_back(tri);
+    }
+    if (mesh_triangles_.empty()) throw GeometryError("measure_deviation", "every triangle of the mesh is degenerate");
+    mesh_tree_.insert(mesh_triangles_.begin(), mesh_triangles_.end());
+    mesh_tree_.accelerate_distance_queries();
+    // CGAL builds trees lazily: one query of each before they are shared by threads.
+    mesh_tree_.closest_point(cg(mesh.positions[0]));
+    reference_tree_.closest_point(cg(mesh.positions[0]));
+    if (!boundary_segments_.empty()) boundary_tree_.closest_point(cg(mesh.positions[0]));
+  }
+
+  DeviationMeasure run() {
+    DeviationMeasure out;
+    double sum_a = 0, sum_b = 0;
+    // Mesh -> surface: corners once, then each triangle's lattice without its corners.
+    std::vector<Eigen::Vector3d> points = mesh_.positions;
+    for (const auto& t : mesh_.triangles) {
+      const Eigen::Vector3d& a = mesh_.positions[t[0]];
+      const Eigen::Vector3d& b = mesh_.positions[t[1]];
+      const Eigen::Vector3d& c = mesh_.positions[t[2]];
+      const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+      const int n = std::clamp(static_cast<int>(std::ceil(longest / spacing_)), 3, 64);
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j) {
+          const int k = n - i - j;
+          if (i == n || j == n || k == n) continue;
+          points.push_back((a * k + b * i + c * j) / n);
+        }
+    }
+    for (double d : in_parallel(points, [this](const Eigen::Vector3d& p) { return to_surface(p); }))
+      add(out.mesh_to_surface, sum_a, d);
+    // Surface -> mesh.
+    for (double d : in_parallel(surface_samples_, [this](const Eigen::Vector3d& p) { return to_mesh(p); }))
+      add(out.surface_to_mesh, sum_b, d);
+    finish(out.mesh_to_surface, sum_a);
+    finish(out.surface_to_mesh, sum_b);
+    out.overall.samples = out.mesh_to_surface.samples + out.surface_to_mesh.samples;
+    out.overall.max = std::max(out.mesh_to_surface.max, out.surface_to_mesh.max);
+    out.overall.rms = out.overall.samples ? std::sqrt((sum_a + sum_b) / out.overall.samples) : 0.0;
+    return out;
+  }
+
+ private:
+  const TriangleMesh& mesh_;
+  double spacing_;
+  std::vector<std::unique_ptr<MeasuredFace>> faces_;
+  std::vector<K::Triangle_3> reference_triangles_;
+  std::vector<ReferenceTriangle> reference_info_;
+  TriangleTree reference_tree_;
+  std::vector<K::Segment_3> boundary_segments_;
+  std::vector<BoundaryPiece> boundary_info_;
+  SegmentTree boundary_tree_;
+  std::vector<Eigen::Vector3d> surface_samples_;
+  std::vector<K::Triangle_3> mesh_triangles_;
+  TriangleTree mesh_tree_;
+
+  // f over all points on every hardware thread (the trees are only read).
+  template <class F>
+  static std::vector<double> in_parallel(const std::vector<Eigen::Vector3d>& points, F f) {
+    std::vector<double> out(points.size());
+    const size_t threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> pool;
+    for (size_t t = 0; t < threads; ++t)
+      pool.emplace_back([&, t] {
+        for (size_t i = t; i < points.size(); i += threads) out[i] = f(points[i]);
+      });
+    for (auto& th : pool) th.join();
+    return out;
+  }
+
+  static void add(DeviationStats& s, double& sum, double d) {
+    s.max = std::max(s.max, d);
+    sum += d * d;
+    ++s.samples;
+  }
+  static void finish(DeviationStats& s, double sum) { s.rms = s.samples ? std::sqrt(sum / s.samples) : 0.0; }
+
+  void build_references() {
+    for (size_t fi = 0; fi < faces_.size(); ++fi) {
+      MeasuredFace& f = *faces_[fi];
+      const SurfaceEvaluator& e = *f.eval;
+      const auto loops = dense_loops(f.trimmed, e, spacing_);
+      std::vector<std::vector<Eigen::Vector2d>> polys;
+      for (const auto& l : loops) polys.push_back(l.uv);
+      f.region = std::make_unique<PointInLoops>(polys);
+      // Dense grid: surface samples; every second line: the reference triangulation.
+      const auto us = grid(e, true, spacing_, 2000), vs = grid(e, false, spacing_, 2000);
+      std::vector<Eigen::Vector2d> coarse;
+      for (size_t j = 0; j < vs.size(); ++j)
+        for (size_t i = 0; i < us.size(); ++i) {
+          const Eigen::Vector2d uv(us[i], vs[j]);
+          if (!f.region->inside(uv)) continue;
+          surface_samples_.push_back(e.point(uv.x(), uv.y()));
+          const bool ci = i % 2 == 0 || i + 1 == us.size(), cj = j % 2 == 0 || j + 1 == vs.size();
+          if (ci && cj) coarse.push_back(uv);
+        }
+      std::vector<std::vector<Eigen::Vector2d>> ref_loops = polys;
+      if (ref_loops.empty()) {
+        ref_loops.push_back({{e.u_start(), e.v_start()}, {e.u_end(), e.v_start()}, {e.u_end(), e.v_end()}, {e.u_start(), e.v_end()}});
+        for (double u : us) surface_samples_.push_back(e.point(u, e.v_start())), surface_samples_.push_back(e.point(u, e.v_end()));
+        for (double v : vs) surface_samples_.push_back(e.point(e.u_start(), v)), surface_samples_.push_back(e.point(e.u_end(), v));
+      }
+      const PlanarTriangulation cdt = triangulate_polygon(ref_loops, coarse);
+      for (const auto& t : cdt.triangles) {
+        const K::Triangle_3 tri(cg(e.point(cdt.points[t[0]].x(), cdt.points[t[0]].y())),
+                                cg(e.point(cdt.points[t[1]].x(), cdt.points[t[1]].y())),
+                                cg(e.point(cdt.points[t[2]].x(), cdt.points[t[2]].y())));
+        if (tri.is_degenerate()) continue;
+        reference_triangles_.push_back(tri);
+        reference_info_.push_back({static_cast<int>(fi), {cdt.points[t[0]], cdt.points[t[1]], cdt.points[t[2]]}});
+      }
+      // Boundary: every dense loop chord, and the loop points as surface samples.
+      for (size_t l = 0; l < loops.size(); ++l) {
+        const auto& d = loops[l];
+        for (size_t k = 0; k < d.uv.size(); ++k) {
+          const size_t n = (k + 1) % d.uv.size();
+          const Eigen::Vector3d a = e.point(d.uv[k].x(), d.uv[k].y()), b = e.point(d.uv[n].x(), d.uv[n].y());
+          surface_samples_.push_back(a);
+          // Extra samples along long chords.
+          const int extra = std::min(64, static_cast<int>((b - a).norm() / spacing_));
+          const TrimSegment& seg = f.trimmed.loops[l].segments[d.at[k].first];
+          const double t0 = d.at[k].second;
+          const double t1 = d.at[n].first == d.at[k].first && d.at[n].second > t0 ? d.at[n].second : segment_t1(seg);
+          for (int m = 1; m <= extra; ++m) {
+            const Eigen::Vector2d uv = segment_uv(seg, t0 + (t1 - t0) * m / (extra + 1));
+            surface_samples_.push_back(e.point(uv.x(), uv.y()));
+          }
+          if ((b - a).norm() == 0) continue;
+          boundary_segments_.emplace_back(cg(a), cg(b));
+          boundary_info_.push_back({static_cast<int>(fi), static_cast<int>(l), d.at[k].first, t0, t1});
+        }
+      }
+    }
+    if (reference_triangles_.empty()) throw GeometryError("measure_deviation", "the surfaces have no area");
+    reference_tree_.insert(reference_triangles_.begin(), reference_triangles_.end());
+    reference_tree_.accelerate_distance_queries();
+    if (!boundary_segments_.empty()) {
+      boundary_tree_.insert(boundary_segments_.begin(), boundary_segments_.end());
+      boundary_tree_.accelerate_distance_queries();
+    }
+  }
+
+  static Eigen::Vector3d barycentric(const K::Triangle_3& t, const Eigen::Vector3d& p) {
+    const Eigen::Vector3d a = eg(t[0]), b = eg(t[1]), c = eg(t[2]);
+    const Eigen::Vector3d v0 = b - a, v1 = c - a, v2 = p - a;
+    const double d00 = v0.dot(v0), d01 = v0.dot(v1), d11 = v1.dot(v1), d20 = v2.dot(v0), d21 = v2.dot(v1);
+    const double den = d00 * d11 - d01 * d01;
+    if (den == 0) return {1, 0, 0};
+    const double v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
+    return {1 - v - w, v, w};
+  }
+
+  double to_surface(const Eigen::Vector3d& p) const {
+    const auto hit = reference_tree_.closest_point_and_primitive(cg(p));
+    const double near = (eg(hit.first) - p).norm();
+    double best = std::numeric_limits<double>::infinity();
+    bool settled = false;
+    project_from(p, static_cast<size_t>(hit.second - reference_triangles_.begin()), eg(hit.first), best, settled);
+    if (settled) return best;
+    // The projection ran into the edge of the domain (a seam: the foot is on the other side) or out
+    // of the trims: start again from every reference triangle near p.
+    const double r = 2 * near + spacing_;
+    const K::Iso_cuboid_3 box(K::Point_3(p.x() - r, p.y() - r, p.z() - r), K::Point_3(p.x() + r, p.y() + r, p.z() + r));
+    std::vector<TriangleTree::Primitive_id> around;
+    reference_tree_.all_intersected_primitives(box, std::back_inserter(around));
+    std::vector<std::pair<double, size_t>> starts;
+    for (const auto& id : around) starts.emplace_back(std::sqrt(CGAL::squared_distance(*id, cg(p))), static_cast<size_t>(id - reference_triangles_.begin()));
+    std::sort(starts.begin(), starts.end());
+    for (size_t k = 0; k < std::min<size_t>(starts.size(), 12); ++k) {
+      const K::Triangle_3& t = reference_triangles_[starts[k].second];
+      project_from(p, starts[k].second, closest_on(t, p), best, settled);
+    }
+    return boundary_segments_.empty() ? best : std::min(best, to_boundary(p));
+  }
+
+  static Eigen::Vector3d closest_on(const K::Triangle_3& t, const Eigen::Vector3d& p) {
+    // The closest point of a triangle: the projection on its plane if inside, else on an edge.
+    const Eigen::Vector3d a = eg(t[0]), b = eg(t[1]), c = eg(t[2]);
+    const Eigen::Vector3d l = barycentric(t, p);
+    if (l.minCoeff() >= 0) return l[0] * a + l[1] * b + l[2] * c;
+    Eigen::Vector3d best = a;
+    for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
+      const double len2 = (y - x).squaredNorm();
+      const double s = len2 > 0 ? std::clamp((p - x).dot(y - x) / len2, 0.0, 1.0) : 0.0;
+      const Eigen::Vector3d q = x + s * (y - x);
+      if ((q - p).norm() < (best - p).norm()) best = q;
+    }
+    return best;
+  }
+
+  // Newton from the (u,v) of `near` on reference triangle `index`; a foot inside the trims and
+  // away from the domain's edge settles the answer.
+  void project_from(const Eigen::Vector3d& p, size_t index, const Eigen::Vector3d& near, double& best,
+                    bool& settled) const {
+    const ReferenceTriangle& r = reference_info_[index];
+    const Eigen::Vector3d l = barycentric(reference_triangles_[index], near);
+    const Eigen::Vector2d start = l[0] * r.uv[0] + l[1] * r.uv[1] + l[2] * r.uv[2];
+    const MeasuredFace& f = *faces_[r.face];
+    const SurfaceEvaluator& e = *f.eval;
+    const SurfaceProjection proj = project_to_surface(e, p, start);
+    if (!f.region->inside(proj.uv)) return;
+    best = std::min(best, proj.distance);
+    const bool on_edge = proj.uv.x() <= e.u_start() || proj.uv.x() >= e.u_end() || proj.uv.y() <= e.v_start() ||
+                         proj.uv.y() >= e.v_end();
+    if (!on_edge) settled = true;
+  }
+
+  double to_boundary(const Eigen::Vector3d& p) const {
+    const auto hit = boundary_tree_.closest_point_and_primitive(cg(p));
+    const size_t index = static_cast<size_t>(hit.second - boundary_segments_.begin());
+    const BoundaryPiece& b = boundary_info_[index];
+    const Eigen::Vector3d a = eg(hit.second->source()), c = eg(hit.second->target());
+    const double len2 = (c - a).squaredNorm();
+    const double s = len2 > 0 ? std::clamp((eg(hit.first) - a).dot(c - a) / len2, 0.0, 1.0) : 0.0;
+    const MeasuredFace& f = *faces_[b.face];
+    const TrimSegment& seg = f.trimmed.loops[b.loop].segments[b.segment];
+    // The nearest boundary point may lie on a neighbouring chord: search the whole segment.
+    const CurveProjection proj =
+        project_to_trim_curve(*f.eval, seg, p, b.t0 + s * (b.t1 - b.t0), segment_t0(seg), segment_t1(seg));
+    return proj.distance;
+  }
+
+  double to_mesh(const Eigen::Vector3d& p) const { return std::sqrt(mesh_tree_.squared_distance(cg(p))); }
+};
+
+TrimmedSurface placed(const TrimmedSurface& t, const Eigen::Affine3d& world) {
+  TrimmedSurface out = t;
+  for (auto& p : out.surface.points) p = world * p;
+  return out;
+}
+
+}  // namespace
+
+DeviationMeasure measure_deviation(const TriangleMesh& mesh, const TrimmedSurface& surface,
+                                   const DeviationOptions& options) {
+  return Measurer(mesh, {surface}, options).run();
+}
+
+DeviationMeasure measure_deviation(const TriangleMesh& mesh, const Scene& scene, const DeviationOptions& options) {
+  std::vector<TrimmedSurface> surfaces;
+  for_each_shape(scene, [&](const Shape& shape, const Eigen::Affine3d& world, const Colour&) {
+    if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry)) surfaces.push_back(placed(*t, world));
+  });
+  return Measurer(mesh, std::move(surfaces), options).run();
+}
+
+}  // namespace cadnurbs

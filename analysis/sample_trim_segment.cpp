@@ -1,0 +1,132 @@
+#include "analysis/sample_trim_segment.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/point_triangle_distance.hpp"
+#include "core/knot_vector.hpp"
+
+namespace cadnurbs {
+
+double segment_t0(const TrimSegment& segment) {
+  if (const auto* c = std::get_if<NurbsCurve>(&segment)) return c->domain_start();
+  return 0.0;
+}
+
+double segment_t1(const TrimSegment& segment) {
+  if (const auto* c = std::get_if<NurbsCurve>(&segment)) return c->domain_end();
+  return static_cast<double>(std::get<Polyline2D>(segment).points.size() - 1);
+}
+
+Eigen::Vector2d segment_uv(const TrimSegment& segment, double t) {
+  if (const auto* c = std::get_if<NurbsCurve>(&segment)) return curve_point(*c, t).head<2>();
+  const auto& pts = std::get<Polyline2D>(segment).points;
+  const double tt = std::clamp(t, 0.0, static_cast<double>(pts.size() - 1));
+  const size_t i = std::min(static_cast<size_t>(tt), pts.size() - 2);
+  const double f = tt - static_cast<double>(i);
+  if (f == 0.0) return pts[i];
+  if (f == 1.0) return pts[i + 1];
+  return (1 - f) * pts[i] + f * pts[i + 1];
+}
+
+Eigen::Vector2d segment_tangent(const TrimSegment& segment, double t) {
+  if (const auto* c = std::get_if<NurbsCurve>(&segment)) return curve_derivatives(*c, t, 1)[1].head<2>();
+  const auto& pts = std::get<Polyline2D>(segment).points;
+  const double tt = std::clamp(t, 0.0, static_cast<double>(pts.size() - 1));
+  const size_t i = std::min(static_cast<size_t>(tt), pts.size() - 2);
+  return pts[i + 1] - pts[i];
+}
+
+std::vector<double> segment_breaks(const TrimSegment& segment) {
+  std::vector<double> out;
+  if (const auto* c = std::get_if<NurbsCurve>(&segment)) {
+    const double a = c->domain_start(), b = c->domain_end();
+    for (const auto& km : knot_multiplicities(c->knots))
+      if (km.value >= a && km.value <= b) out.push_back(km.value);
+    return out;
+  }
+  const size_t n = std::get<Polyline2D>(segment).points.size();
+  for (size_t i = 0; i < n; ++i) out.push_back(static_cast<double>(i));
+  return out;
+}
+
+bool is_degenerate_segment(const SurfaceEvaluator& surface, const TrimSegment& segment, double tolerance) {
+  const auto breaks = segment_breaks(segment);
+  const Eigen::Vector3d first = surface.point(segment_uv(segment, breaks.front()).x(), segment_uv(segment, breaks.front()).y());
+  for (size_t i = 0; i + 1 < breaks.size(); ++i)
+    for (int k = 0; k <= 8; ++k) {
+      const Eigen::Vector2d uv = segment_uv(segment, breaks[i] + (breaks[i + 1] - breaks[i]) * k / 8.0);
+      if ((surface.point(uv.x(), uv.y()) - first).norm() > tolerance) return false;
+    }
+  return true;
+}
+
+namespace {
+
+// Whether chord (a, b) is fine; see the header for the two criteria.
+bool chord_ok(const SurfaceEvaluator& surface, const SurfaceDeviationBound& bound, const TrimSegment& segment,
+              const TrimSample& a, const TrimSample& b, double d) {
+  constexpr int m = 8;
+  double parametric = 0;
+  for (int j = 1; j < m; ++j) {
+    const double s = static_cast<double>(j) / m;
+    const Eigen::Vector2d uv = segment_uv(segment, a.t + (b.t - a.t) * s);
+    if (point_segment_distance(surface.point(uv.x(), uv.y()), a.point, b.point) > 0.9 * d) return false;
+    const Eigen::Vector2d chord_uv = (1 - s) * a.uv + s * b.uv;
+    parametric = std::max(parametric, point_segment_distance(surface.point(chord_uv.x(), chord_uv.y()), a.point, b.point));
+    if (parametric > d) return false;
+  }
+  // Remainder between the samples of the (u,v) chord: 1D FMM bound on pieces of length h/m.
+  const Eigen::Vector2d duv = b.uv - a.uv;
+  const auto m2 = bound.over(std::min(a.uv.x(), b.uv.x()), std::max(a.uv.x(), b.uv.x()), std::min(a.uv.y(), b.uv.y()),
+                             std::max(a.uv.y(), b.uv.y()));
+  const double q = m2.uu * duv.x() * duv.x() + 2 * m2.uv * std::abs(duv.x() * duv.y()) + m2.vv * duv.y() * duv.y();
+  // A chord that crosses a C0 knot line has no such bound: the samples are all we have there, and
+  // the 3D criterion above keeps such chords short.
+  return parametric + q / (8.0 * m * m) <= d;
+}
+
+}  // namespace
+
+std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, const SurfaceDeviationBound& bound,
+                                            const TrimSegment& segment, double max_deviation,
+                                            const Eigen::Vector3d& start_point, const Eigen::Vector3d& end_point,
+                                            const std::vector<double>* grid_u, const std::vector<double>* grid_v) {
+  auto crossings = [](const std::vector<double>* g, double a, double b) {
+    if (!g) return 0L;
+    const double lo = std::min(a, b), hi = std::max(a, b);
+    return static_cast<long>(std::lower_bound(g->begin(), g->end(), hi) - std::upper_bound(g->begin(), g->end(), lo));
+  };
+  std::vector<double> breaks = segment_breaks(segment);
+  if (breaks.size() == 2) breaks.insert(breaks.begin() + 1, 0.5 * (breaks[0] + breaks[1]));
+  const double t0 = breaks.front(), t1 = breaks.back();
+  const double min_step = 1e-12 * std::max(1.0, std::abs(t1 - t0));
+  auto sample = [&](double t) {
+    const Eigen::Vector2d uv = segment_uv(segment, t);
+    return TrimSample{t, uv, surface.point(uv.x(), uv.y())};
+  };
+  std::vector<TrimSample> out;
+  TrimSample first = sample(t0);
+  first.point = start_point;
+  out.push_back(first);
+  for (size_t i = 0; i + 1 < breaks.size(); ++i) {
+    TrimSample last = sample(breaks[i + 1]);
+    if (i + 2 == breaks.size()) last.point = end_point;
+    // Depth-first bisection; `pending` holds the right ends still to reach, nearest last.
+    std::vector<TrimSample> pending{last};
+    while (!pending.empty()) {
+      const TrimSample& a = out.back();
+      const TrimSample b = pending.back();
+      const bool coarse = crossings(grid_u, a.uv.x(), b.uv.x()) > 1 || crossings(grid_v, a.uv.y(), b.uv.y()) > 1;
+      if (b.t - a.t <= min_step || (!coarse && chord_ok(surface, bound, segment, a, b, max_deviation))) {
+        out.push_back(b);
+        pending.pop_back();
+      } else {
+        pending.push_back(sample(0.5 * (a.t + b.t)));
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace cadnurbs

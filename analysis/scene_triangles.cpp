@@ -1,0 +1,21 @@
+#include "analysis/scene_triangles.hpp"
+
+namespace cadnurbs {
+
+TriangleMesh scene_triangles(const Scene& scene) {
+  TriangleMesh out;
+  for_each_shape(scene, [&](const Shape& shape, const Eigen::Affine3d& world, const Colour&) {
+    const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry);
+    if (!mesh) return;
+    TriangleMesh moved = *mesh;
+    if (!world.matrix().isIdentity(0)) {
+      const Eigen::Matrix3d normal_matrix = world.linear().inverse().transpose();
+      for (auto& p : moved.positions) p = world * p;
+      for (auto& n : moved.corner_normals) n = (normal_matrix * n).normalized();
+    }
+    append(out, moved);
+  });
+  return out;
+}
+
+}  // namespace cadnurbs

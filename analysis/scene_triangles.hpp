@@ -1,0 +1,12 @@
+#pragma once
+// All the triangle meshes of a scene as one mesh in world coordinates (for measuring a tessellated
+// scene against its NURBS, or writing it as one STL). Normals are rotated with their triangles.
+#include "core/scene.hpp"
+
+namespace cadnurbs {
+
+// Every TriangleMesh shape transformed by its node's world transform and appended; surfaces and
+// curves are left out. Vertices are not welded.
+TriangleMesh scene_triangles(const Scene& scene);
+
+}  // namespace cadnurbs

@@ -1,0 +1,123 @@
+#include "formats/brep/brep_scene_builder.hpp"
+
+#include <Standard_ErrorHandler.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <algorithm>
+
+#include "formats/brep/face_mesh.hpp"
+#include "formats/brep/face_to_trimmed_surface.hpp"
+#include "formats/brep/occt_errors.hpp"
+#include "formats/brep/surface_type_name.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+std::vector<TopoDS_Face> faces_of(const TopoDS_Shape& container) {
+  TopTools_IndexedMapOfShape map;
+  TopExp::MapShapes(container, TopAbs_FACE, map);
+  std::vector<TopoDS_Face> faces;
+  for (int i = 1; i <= map.Extent(); ++i) faces.push_back(TopoDS::Face(map(i)));
+  return faces;
+}
+
+}  // namespace
+
+const BrepSceneBuilder::Converted& BrepSceneBuilder::convert(const TopoDS_Face& face) {
+  if (const size_t* index = converted_index_.Seek(face)) return converted_[*index];
+  Converted result;
+  result.surface_type = surface_type_name(face);
+  try {
+    OCC_CATCH_SIGNALS
+    result.geometry = face_to_trimmed_surface(face, edges_);
+  } catch (const Standard_Failure& failure) {
+    result.fallback_reason = occt_failure_text(failure);
+  } catch (const std::exception& error) {
+    result.fallback_reason = one_line(error.what());
+  }
+  if (!result.fallback_reason.empty()) {
+    TriangleMesh mesh;
+    try {
+      OCC_CATCH_SIGNALS
+      mesh = face_mesh(face, deflection_);
+    } catch (const Standard_Failure& failure) {
+      result.fallback_reason += "; meshing failed too: " + occt_failure_text(failure);
+    }
+    if (mesh.triangles.empty() && result.fallback_reason.find("meshing failed") == std::string::npos)
+      result.fallback_reason += "; meshing gave no triangles";
+    result.geometry = std::move(mesh);
+  }
+  converted_index_.Bind(face, converted_.size());
+  converted_.push_back(std::move(result));
+  return converted_.back();
+}
+
+void BrepSceneBuilder::add_faces(SceneNode& node, const std::string& node_path, const std::vector<TopoDS_Face>& faces,
+                                 const ShapeColours& colours) {
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const Converted& converted = convert(faces[i]);
+    const int number = static_cast<int>(i) + 1;
+    Shape shape;
+    shape.name = "face " + std::to_string(number);
+    if (!converted.fallback_reason.empty()) {
+      shape.name += " (mesh)";
+      fallbacks_.push_back({node_path, number, converted.surface_type, converted.fallback_reason});
+    }
+    shape.geometry = converted.geometry;
+    if (const Colour* colour = colours.Seek(faces[i])) shape.colour = *colour;
+    node.shapes.push_back(std::move(shape));
+    ++face_count_;
+  }
+}
+
+void BrepSceneBuilder::add_shape(SceneNode& node, const std::string& node_path, const TopoDS_Shape& shape,
+                                 const ShapeColours& colours) {
+  if (shape.IsNull()) return;
+  // Solids, then shells outside solids, then faces outside shells, each once.
+  std::vector<TopoDS_Shape> containers;
+  TopTools_IndexedMapOfShape solids, shells, faces;
+  for (TopExp_Explorer ex(shape, TopAbs_SOLID); ex.More(); ex.Next()) solids.Add(ex.Current());
+  for (TopExp_Explorer ex(shape, TopAbs_SHELL, TopAbs_SOLID); ex.More(); ex.Next()) shells.Add(ex.Current());
+  for (TopExp_Explorer ex(shape, TopAbs_FACE, TopAbs_SHELL); ex.More(); ex.Next()) faces.Add(ex.Current());
+  std::vector<TopoDS_Face> free_faces;
+  for (int i = 1; i <= faces.Extent(); ++i) free_faces.push_back(TopoDS::Face(faces(i)));
+
+  if (solids.Extent() + shells.Extent() == 1 && free_faces.empty()) {
+    const TopoDS_Shape& only = solids.Extent() == 1 ? solids(1) : shells(1);
+    if (const Colour* colour = colours.Seek(only)) node.colour = *colour;
+    add_faces(node, node_path, faces_of(only), colours);
+    return;
+  }
+  auto add_child = [&](const TopoDS_Shape& container, const std::string& name) {
+    SceneNode child;
+    child.name = name;
+    if (const Colour* colour = colours.Seek(container)) child.colour = *colour;
+    add_faces(child, node_path + "/" + name, faces_of(container), colours);
+    node.children.push_back(std::move(child));
+  };
+  for (int i = 1; i <= solids.Extent(); ++i) add_child(solids(i), "solid " + std::to_string(i));
+  for (int i = 1; i <= shells.Extent(); ++i) add_child(shells(i), "shell " + std::to_string(i));
+  add_faces(node, node_path, free_faces, colours);
+}
+
+BrepTranslation BrepSceneBuilder::finish(Scene scene) {
+  BrepTranslation out;
+  out.scene = std::move(scene);
+  out.fallbacks = std::move(fallbacks_);
+  out.face_count = face_count_;
+  out.degenerated_edges = edges_.degenerated();
+  return out;
+}
+
+}  // namespace cadnurbs

@@ -1,0 +1,257 @@
+#include "formats/brep/face_to_trimmed_surface.hpp"
+
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2dConvert.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BezierSurface.hxx>
+#include <NCollection_DataMap.hxx>
+#include <Precision.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopTools_ShapeMapHasher.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <sstream>
+
+#include "core/geometry_error.hpp"
+#include "formats/brep/direct_face.hpp"
+#include "formats/brep/face_pcurves.hpp"
+#include "formats/brep/loop_closure.hpp"
+#include "formats/brep/loop_orientation.hpp"
+#include "formats/brep/occt_errors.hpp"
+#include "formats/brep/occt_to_nurbs.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+// The converted face's surface as a B-spline with the same parameterization as its pcurves.
+Handle(Geom_BSplineSurface) bspline_surface(const TopoDS_Face& face) {
+  Handle(Geom_Surface) surface = BRep_Tool::Surface(face);  // location applied
+  if (surface.IsNull()) throw FaceConversionError("the face has no surface");
+  if (auto bspline = Handle(Geom_BSplineSurface)::DownCast(surface))
+    return Handle(Geom_BSplineSurface)::DownCast(bspline->Copy());
+  // A Bezier patch converts with its parameters unchanged; anything else would move the pcurves.
+  if (surface->IsKind(STANDARD_TYPE(Geom_BezierSurface))) return GeomConvert::SurfaceToBSplineSurface(surface);
+  throw FaceConversionError(std::string("NurbsConvert left a ") + surface->DynamicType()->Name() +
+                            " surface unconverted");
+}
+
+// Range of the pcurves in u (direction 0) or v (1), from samples (control polygons overshoot).
+std::pair<double, double> pcurve_range(const std::vector<WireUses>& wires, int direction) {
+  double lo = Precision::Infinite(), hi = -Precision::Infinite();
+  for (const auto& wire : wires)
+    for (const auto& use : wire) {
+      const int n = std::max(8, 4 * use.curve->NbPoles());
+      const double a = use.curve->FirstParameter(), b = use.curve->LastParameter();
+      for (int i = 0; i <= n; ++i) {
+        const gp_Pnt2d p = use.curve->Value(a + (b - a) * i / n);
+        const double x = direction == 0 ? p.X() : p.Y();
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+      }
+    }
+  return {lo, hi};
+}
+
+void shift_pcurves(std::vector<WireUses>& wires, int direction, double amount) {
+  const gp_Vec2d shift = direction == 0 ? gp_Vec2d(amount, 0) : gp_Vec2d(0, amount);
+  for (auto& wire : wires)
+    for (auto& use : wire) use.curve->Translate(shift);
+}
+
+// Makes the surface non-periodic while keeping every pcurve inside its domain: the pcurves move by whole
+// periods when that fits them in, otherwise the surface is re-based to start where the face starts.
+void unperiodize(Handle(Geom_BSplineSurface)& surface, std::vector<WireUses>& wires) {
+  for (int direction = 0; direction < 2; ++direction) {
+    const bool periodic = direction == 0 ? surface->IsUPeriodic() : surface->IsVPeriodic();
+    if (!periodic) continue;
+    Standard_Real u0, u1, v0, v1;
+    surface->Bounds(u0, u1, v0, v1);
+    const double a = direction == 0 ? u0 : v0, b = direction == 0 ? u1 : v1;
+    const double period = b - a, tol = 1e-9 * period;
+    if (!wires.empty()) {
+      auto [lo, hi] = pcurve_range(wires, direction);
+      if (lo < a - tol || hi > b + tol) {
+        const double k = std::floor((lo - a + tol) / period);
+        if (hi - k * period <= b + tol) {
+          shift_pcurves(wires, direction, -k * period);
+        } else {
+          // The face crosses the seam of the parameterization: start the surface where the face starts.
+          hi = std::min(hi, lo + period);
+          if (direction == 0)
+            surface->Segment(lo, hi, v0, v1);
+          else
+            surface->Segment(u0, u1, lo, hi);
+        }
+      }
+    }
+    if (direction == 0 && surface->IsUPeriodic()) surface->SetUNotPeriodic();
+    if (direction == 1 && surface->IsVPeriodic()) surface->SetVNotPeriodic();
+  }
+}
+
+void mirror_u(NurbsSurface& s) {
+  const double a = s.u_start(), b = s.u_end();
+  for (int j = 0; j < s.v_count; ++j) {
+    std::reverse(s.points.begin() + s.index(0, j), s.points.begin() + s.index(0, j) + s.u_count);
+    if (s.is_rational()) std::reverse(s.weights.begin() + s.index(0, j), s.weights.begin() + s.index(0, j) + s.u_count);
+  }
+  const std::vector<double> k = s.u_knots;
+  for (size_t m = 0; m < k.size(); ++m) s.u_knots[m] = a + b - k[k.size() - 1 - m];
+}
+
+void mirror_u(TrimLoop& loop, double a, double b) {
+  for (auto& segment : loop.segments) {
+    if (auto* c = std::get_if<NurbsCurve>(&segment)) {
+      for (auto& p : c->points) p.x() = a + b - p.x();
+    } else {
+      for (auto& p : std::get<Polyline2D>(segment).points) p.x() = a + b - p.x();
+    }
+  }
+}
+
+std::string number_text(double x) {
+  std::ostringstream out;
+  out.precision(3);
+  out << x;
+  return out.str();
+}
+
+// The wire as a closed core loop: gaps within the 3D tolerance are closed, by moving the segment ends
+// when small in (u, v), by a straight bridge when the gap is long in (u, v) but one point in 3D.
+TrimLoop close_wire(const WireUses& uses, const Handle(Geom_BSplineSurface)& surface, double domain_size,
+                    int wire_number) {
+  TrimLoop out;
+  for (const auto& use : uses) {
+    out.segments.emplace_back(to_nurbs_curve_2d(use.curve));
+    out.edges.push_back(use.ref);
+  }
+  const size_t n = out.segments.size();
+  // Joint i: end of segment i, start of segment i + 1. Bridges are inserted after the loop is scanned.
+  std::vector<std::pair<size_t, Polyline2D>> bridges;
+  for (size_t i = 0; i < n; ++i) {
+    const size_t next = (i + 1) % n;
+    const Eigen::Vector2d end = segment_end(out.segments[i]), start = segment_start(out.segments[next]);
+    const double gap = (end - start).norm();
+    if (gap == 0.0) continue;
+    if (gap <= 1e-7 * domain_size) {
+      join_segments(out.segments[i], out.segments[next]);
+      continue;
+    }
+    // The vertex joins the two edges; each pcurve may be off by its edge's tolerance.
+    // Both pcurve ends lie within the tolerance of the vertex, so up to twice it apart.
+    const double tolerance = 2 * std::max(uses[i].end_tolerance, uses[next].edge_tolerance);
+    const gp_Pnt p = surface->Value(end.x(), end.y());
+    const double distance = p.Distance(surface->Value(start.x(), start.y()));
+    if (distance > tolerance)
+      throw FaceConversionError("wire " + std::to_string(wire_number) + " does not close: gap " + number_text(gap) +
+                                " in (u,v) between its segments " + std::to_string(i + 1) + " and " +
+                                std::to_string(next + 1) + ", " + number_text(distance) +
+                                " in 3D, above the tolerance " + number_text(tolerance));
+    if (gap <= 1e-4 * domain_size) {
+      join_segments(out.segments[i], out.segments[next]);
+      continue;
+    }
+    for (int k = 1; k < 8; ++k) {
+      const Eigen::Vector2d q = end + (start - end) * (k / 8.0);
+      if (surface->Value(q.x(), q.y()).Distance(p) > tolerance)
+        throw FaceConversionError("wire " + std::to_string(wire_number) + " does not close: gap " +
+                                  number_text(gap) + " in (u,v) between its segments " + std::to_string(i + 1) +
+                                  " and " + std::to_string(next + 1) + " is not a degenerated point");
+    }
+    bridges.emplace_back(i, Polyline2D{{end, start}});
+  }
+  for (auto it = bridges.rbegin(); it != bridges.rend(); ++it) {
+    out.segments.insert(out.segments.begin() + static_cast<long>(it->first) + 1, it->second);
+    out.edges.insert(out.edges.begin() + static_cast<long>(it->first) + 1, TrimEdgeRef{});
+  }
+  return out;
+}
+
+// Runs one step of the conversion, naming the step in what OCCT throws (its messages are often empty).
+template <class Step>
+auto step(const char* name, Step&& run) {
+  try {
+    return run();
+  } catch (const Standard_Failure& failure) {
+    throw FaceConversionError(std::string(name) + ": " + occt_failure_text(failure));
+  }
+}
+
+// The face through BRepBuilderAPI_NurbsConvert: every surface type, pcurves recomputed by projection
+// where the surface's parameterization changes.
+BSplineFace nurbs_converted_face(const TopoDS_Face& face, EdgeNumbering& edges) {
+  BRepBuilderAPI_NurbsConvert convert;
+  step("BRepBuilderAPI_NurbsConvert", [&] {
+    convert.Perform(face, /*Copy=*/true);
+    return 0;
+  });
+  if (!convert.IsDone()) throw FaceConversionError("BRepBuilderAPI_NurbsConvert failed");
+  const TopoDS_Face converted = TopoDS::Face(convert.Shape());
+
+  // The converted edges keep the direction of their source edges; only their identity changes.
+  NCollection_DataMap<TopoDS_Shape, int, TopTools_ShapeMapHasher> origin;
+  TopTools_IndexedMapOfShape source_edges;
+  TopExp::MapShapes(face, TopAbs_EDGE, source_edges);
+  for (int i = 1; i <= source_edges.Extent(); ++i) {
+    const TopoDS_Edge& edge = TopoDS::Edge(source_edges(i));
+    origin.Bind(convert.ModifiedShape(edge), edges.number(edge));
+  }
+  BSplineFace out;
+  out.surface = step("surface", [&] { return bspline_surface(converted); });
+  const TopoDS_Face forward = TopoDS::Face(converted.Oriented(TopAbs_FORWARD));
+  out.wires = step("pcurves", [&] {
+    return face_pcurves(
+        forward,
+        [&](const TopoDS_Edge& edge) {
+          const int* number = origin.Seek(edge);
+          if (!number) throw FaceConversionError("an edge of the converted face has no source edge");
+          return *number;
+        },
+        trimmed_bspline);
+  });
+  return out;
+}
+
+}  // namespace
+
+TrimmedSurface face_to_trimmed_surface(const TopoDS_Face& face, EdgeNumbering& edges) {
+  // B-spline faces, and analytic faces bounded by iso-lines (most planes, cylinders and cones of machined
+  // parts), convert exactly and fast; the rest go through OCCT's NurbsConvert, whose pcurve projections cost
+  // far more.
+  std::optional<BSplineFace> direct = step("direct conversion", [&] { return direct_face(face, edges); });
+  BSplineFace converted = direct ? std::move(*direct) : nurbs_converted_face(face, edges);
+  Handle(Geom_BSplineSurface)& surface = converted.surface;
+  std::vector<WireUses>& wires = converted.wires;
+  step("unperiodizing", [&] {
+    unperiodize(surface, wires);
+    return 0;
+  });
+
+  TrimmedSurface out;
+  out.surface = to_nurbs_surface(surface);
+  const double domain_size = std::max(out.surface.u_end() - out.surface.u_start(),
+                                      out.surface.v_end() - out.surface.v_start());
+  for (size_t w = 0; w < wires.size(); ++w)
+    out.loops.push_back(close_wire(wires[w], surface, domain_size, static_cast<int>(w) + 1));
+
+  if (face.Orientation() == TopAbs_REVERSED) {
+    const double a = out.surface.u_start(), b = out.surface.u_end();
+    mirror_u(out.surface);
+    for (auto& loop : out.loops) mirror_u(loop, a, b);
+  }
+  orient_loops(out.loops);
+  validate(out, "face");
+  return out;
+}
+
+}  // namespace cadnurbs

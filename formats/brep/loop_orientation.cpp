@@ -1,0 +1,72 @@
+#include "formats/brep/loop_orientation.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+
+namespace cadnurbs {
+
+namespace {
+
+struct SampledLoop {
+  std::vector<Eigen::Vector2d> polygon;
+  Eigen::AlignedBox2d box;
+  double signed_area = 0;
+};
+
+SampledLoop sample(const TrimLoop& loop) {
+  SampledLoop s;
+  s.polygon = loop_polygon(loop, 8);
+  for (size_t i = 0; i < s.polygon.size(); ++i) {
+    const auto& a = s.polygon[i];
+    const auto& b = s.polygon[(i + 1) % s.polygon.size()];
+    s.signed_area += 0.5 * (a.x() * b.y() - b.x() * a.y());
+    s.box.extend(a);
+  }
+  return s;
+}
+
+// Even-odd crossing test.
+bool inside(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p) {
+  bool in = false;
+  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const auto& a = polygon[i];
+    const auto& b = polygon[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+      in = !in;
+  }
+  return in;
+}
+
+// Points spread along the loop, at midpoints of polygon edges (vertices are where loops touch).
+std::vector<Eigen::Vector2d> probes(const std::vector<Eigen::Vector2d>& polygon) {
+  constexpr size_t count = 9;
+  std::vector<Eigen::Vector2d> out;
+  const size_t n = polygon.size();
+  const size_t step = std::max<size_t>(1, n / count);
+  for (size_t i = 0; i < n && out.size() < count; i += step)
+    out.push_back(0.5 * (polygon[i] + polygon[(i + 1) % n]));
+  return out;
+}
+
+}  // namespace
+
+void orient_loops(std::vector<TrimLoop>& loops) {
+  std::vector<SampledLoop> sampled;
+  sampled.reserve(loops.size());
+  for (const auto& loop : loops) sampled.push_back(sample(loop));
+  for (size_t i = 0; i < loops.size(); ++i) {
+    if (sampled[i].polygon.size() < 3) continue;
+    const auto points = probes(sampled[i].polygon);
+    int depth = 0;
+    for (size_t j = 0; j < loops.size(); ++j) {
+      if (j == i || sampled[j].polygon.size() < 3 || !sampled[j].box.intersects(sampled[i].box)) continue;
+      size_t votes = 0;
+      for (const auto& p : points) votes += inside(sampled[j].polygon, p) ? 1 : 0;
+      if (2 * votes > points.size()) ++depth;
+    }
+    const bool want_ccw = depth % 2 == 0;
+    if ((sampled[i].signed_area > 0) != want_ccw) loops[i] = reversed(loops[i]);
+  }
+}
+
+}  // namespace cadnurbs

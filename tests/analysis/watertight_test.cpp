@@ -1,0 +1,125 @@
+// Shared edges: faces that name the same model edge get bit-identical vertices there, so a closed
+// solid tessellates to a closed mesh (zero boundary and non-manifold edges after weld_exact).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "analysis/count_boundary_edges.hpp"
+#include "analysis/measure_deviation.hpp"
+#include "analysis/scene_triangles.hpp"
+#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/weld_exact.hpp"
+#include "analysis/sample_trim_segment.hpp"
+#include "analysis_shapes.hpp"
+#include "samples/capping.hpp"
+#include "samples/capping_shapes.hpp"
+
+namespace cadnurbs {
+namespace {
+
+Eigen::Vector3d on_segment(const TrimmedSurface& t, const TrimSegment& s, double fraction) {
+  const Eigen::Vector2d uv = segment_uv(s, segment_t0(s) + fraction * (segment_t1(s) - segment_t0(s)));
+  return surface_point(t.surface, uv.x(), uv.y());
+}
+
+// The capping with edge ids: the body (closed in u, open at its v ends) gets a loop around its
+// domain whose bottom and top sides are the lids' loops and whose u sides are one seam edge.
+Scene capping_with_edges(const std::string& name) {
+  Scene scene = capping_nurbs(bundled_capping(name));
+  auto& shapes = scene.root.shapes;
+  TrimmedSurface& body = std::get<TrimmedSurface>(shapes[0].geometry);
+  const NurbsSurface& s = body.surface;
+  const Eigen::Vector2d a(s.u_start(), s.v_start()), b(s.u_end(), s.v_start()), c(s.u_end(), s.v_end()),
+      d(s.u_start(), s.v_end());
+  TrimLoop loop;
+  for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}, std::pair{d, a}})
+    loop.segments.emplace_back(Polyline2D{{p, q}});
+  loop.edges = {{1, false}, {3, false}, {2, false}, {3, true}};
+  body.loops = {loop};
+  // Each lid's loop runs along its body side one way or the other.
+  for (int lid = 1; lid <= 2; ++lid) {
+    TrimmedSurface& t = std::get<TrimmedSurface>(shapes[lid].geometry);
+    const TrimSegment& side = body.loops[0].segments[lid == 1 ? 0 : 2];
+    const TrimSegment& trim = t.loops[0].segments[0];
+    const bool same = (on_segment(body, side, 0.3) - on_segment(t, trim, 0.3)).norm() <
+                      (on_segment(body, side, 0.3) - on_segment(t, trim, 0.7)).norm();
+    t.loops[0].edges = {{lid, !same}};
+  }
+  return scene;
+}
+
+TriangleMesh node_mesh(const Scene& tessellated) {
+  TriangleMesh all;
+  for (const auto& shape : tessellated.root.shapes) append(all, std::get<TriangleMesh>(shape.geometry));
+  return all;
+}
+
+TEST(Watertight, SphereWithSeamAndPolesIsClosed) {
+  Scene scene;
+  scene.root.shapes.push_back({"ball", test::sphere_with_edges(50, 7), std::nullopt});
+  for (double d : {1.0, 0.1}) {
+    const TriangleMesh mesh = weld_exact(node_mesh(tessellate_to_deviation(scene, d)));
+    const EdgeCounts e = count_boundary_edges(mesh);
+    EXPECT_EQ(e.boundary, 0) << "D=" << d;
+    EXPECT_EQ(e.non_manifold, 0) << "D=" << d;
+  }
+}
+
+TEST(Watertight, CappingBodyAndLidsCloseUp) {
+  for (const std::string name : {"capping-90", "capping-end"}) {
+    const Scene scene = capping_with_edges(name);
+    const CappingDefinition def = bundled_capping(name);
+    long previous = -1;
+    // D = 0.01 on one capping only: its measurement alone takes seconds.
+    for (double d : {0.01, 0.1, 1.0}) {
+      if (name != "capping-90" && d < 0.1) continue;
+      TessellationReport report;
+      const Scene out = tessellate_to_deviation(scene, d, &report);
+      ASSERT_EQ(out.root.shapes.size(), 3u);
+      EXPECT_EQ(out.root.shapes[0].name, "body");
+      const TriangleMesh all = node_mesh(out);
+      const TriangleMesh welded = weld_exact(all);
+      const EdgeCounts e = count_boundary_edges(welded);
+      EXPECT_EQ(e.boundary, 0) << name << " D=" << d;
+      EXPECT_EQ(e.non_manifold, 0) << name << " D=" << d;
+      EXPECT_EQ(report.uncertified_triangles, 0) << name << " D=" << d;
+      EXPECT_EQ(report.unshared_edge_uses, 0) << name << " D=" << d;
+      // Independent check on the body: the exact sweep distance of every body vertex and triangle
+      // centre (the sweep is known in closed form).
+      const TriangleMesh& body = std::get<TriangleMesh>(out.root.shapes[0].geometry);
+      double exact = 0;
+      for (const auto& t : body.triangles) {
+        const Eigen::Vector3d c = (body.positions[t[0]] + body.positions[t[1]] + body.positions[t[2]]) / 3.0;
+        exact = std::max(exact, distance_to_swept_surface(def, c));
+      }
+      const DeviationMeasure m = measure_deviation(all, scene);
+      std::printf("  %-12s D=%-5g triangles %7zu (body %zu)  certified %.4g  body centres exact %.4g  measured "
+                  "mesh->surface %.4g surface->mesh %.4g\n",
+                  name.c_str(), d, all.triangles.size(), body.triangles.size(), report.certified_deviation, exact,
+                  m.mesh_to_surface.max, m.surface_to_mesh.max);
+      EXPECT_LE(exact, d * (1 + 1e-9)) << name;
+      EXPECT_LE(m.overall.max, d * (1 + 1e-9)) << name << " D=" << d;
+      if (previous >= 0) {
+        EXPECT_LT(static_cast<long>(all.triangles.size()), previous) << name;
+      }
+      previous = static_cast<long>(all.triangles.size());
+    }
+  }
+}
+
+TEST(Watertight, WeldExactMergesOnlyIdenticalPositions) {
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1e-300}};
+  m.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const TriangleMesh w = weld_exact(m);
+  EXPECT_EQ(w.positions.size(), 5u);  // (1,0,0) merged; (0,1,1e-300) is not (0,1,0)
+  EXPECT_EQ(count_boundary_edges(w).boundary, 6);
+  TriangleMesh fan;
+  fan.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  fan.triangles = {{0, 1, 2}, {0, 2, 1}, {0, 1, 3}};
+  const EdgeCounts e = count_boundary_edges(fan);
+  EXPECT_EQ(e.non_manifold, 1);  // edge 0-1 has three triangles
+}
+
+}  // namespace
+}  // namespace cadnurbs

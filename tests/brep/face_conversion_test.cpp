@@ -1,0 +1,216 @@
+// Faces of OCCT primitives through shape_to_scene: seams, poles, apexes, holes, reversed faces, periodic
+// B-splines crossing their seam, and a face that cannot be converted. Areas and volumes are checked
+// against the closed forms.
+#include <gtest/gtest.h>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRepLib.hxx>
+#include <BRep_Builder.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_Plane.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom2d_Line.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Wire.hxx>
+#include <cmath>
+#include <map>
+
+#include "formats/brep/xcaf_to_scene.hpp"
+#include "occt_reference.hpp"
+#include "trimmed_measure.hpp"
+
+namespace cadnurbs::test {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+// The independent integration (trimmed_measure) is good to a few 1e-6; a wrong conversion is far off.
+constexpr double close = 1e-5;
+
+struct Totals {
+  int nurbs = 0, meshes = 0;
+  SurfaceMeasure measure;
+};
+
+Totals totals(const BrepTranslation& t) {
+  Totals out;
+  for_each_shape(t.scene, [&](const Shape& shape, const Eigen::Affine3d& world, const Colour&) {
+    if (const auto* s = std::get_if<TrimmedSurface>(&shape.geometry)) {
+      ++out.nurbs;
+      EXPECT_NO_THROW(validate(*s, shape.name));
+      for (size_t l = 0; l < s->loops.size(); ++l) EXPECT_TRUE(region_left_of_loop(*s, l)) << shape.name << " loop " << l;
+      const auto m = measure_trimmed_surface(*s, world);
+      out.measure.area += m.area;
+      out.measure.volume += m.volume;
+    } else {
+      ++out.meshes;
+    }
+  });
+  return out;
+}
+
+// Every edge of a closed solid is used twice, once each way; degenerated edges once.
+void expect_closed_edge_uses(const BrepTranslation& t) {
+  std::map<int, std::pair<int, int>> uses;  // edge -> (uses, against)
+  for_each_shape(t.scene, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
+    if (const auto* s = std::get_if<TrimmedSurface>(&shape.geometry))
+      for (const auto& loop : s->loops)
+        for (const auto& ref : loop.edges) {
+          ASSERT_GE(ref.edge, 0);
+          ++uses[ref.edge].first;
+          uses[ref.edge].second += ref.reversed ? 1 : 0;
+        }
+  });
+  ASSERT_EQ(uses.size(), t.degenerated_edges.size());
+  for (const auto& [edge, u] : uses) {
+    if (t.degenerated_edges[edge]) {
+      EXPECT_EQ(u.first, 1) << "degenerated edge " << edge;
+    } else {
+      EXPECT_EQ(u.first, 2) << "edge " << edge;
+      EXPECT_EQ(u.second, 1) << "edge " << edge << " is not used once each way";
+    }
+  }
+}
+
+TEST(FaceConversion, CylinderSeamIsOneEdgeUsedBothWays) {
+  const double r = 10, h = 20;
+  const BrepTranslation t = shape_to_scene(BRepPrimAPI_MakeCylinder(r, h).Shape(), "cylinder");
+  ASSERT_EQ(t.face_count, 3);
+  const Totals sum = totals(t);
+  EXPECT_EQ(sum.nurbs, 3);
+  EXPECT_NEAR(sum.measure.area, 2 * pi * r * h + 2 * pi * r * r, close * sum.measure.area);
+  EXPECT_NEAR(sum.measure.volume, pi * r * r * h, close * sum.measure.volume);
+  expect_closed_edge_uses(t);
+  // The lateral face: four segments, the seam twice.
+  const auto& lateral = std::get<TrimmedSurface>(t.scene.root.shapes[0].geometry);
+  ASSERT_EQ(lateral.loops.size(), 1u);
+  std::map<int, int> count;
+  for (const auto& ref : lateral.loops[0].edges) ++count[ref.edge];
+  int twice = 0;
+  for (const auto& [edge, n] : count) twice += n == 2 ? 1 : 0;
+  EXPECT_EQ(twice, 1) << "one seam edge used twice by the lateral face";
+}
+
+TEST(FaceConversion, SpherePolesAreDegeneratedEdges) {
+  const double r = 5;
+  const BrepTranslation t = shape_to_scene(BRepPrimAPI_MakeSphere(r).Shape(), "sphere");
+  ASSERT_EQ(t.face_count, 1);
+  const Totals sum = totals(t);
+  EXPECT_EQ(sum.meshes, 0);
+  EXPECT_NEAR(sum.measure.area, 4 * pi * r * r, close * sum.measure.area);
+  EXPECT_NEAR(sum.measure.volume, 4.0 / 3 * pi * r * r * r, close * sum.measure.volume);
+  int degenerated = 0;
+  for (bool d : t.degenerated_edges) degenerated += d ? 1 : 0;
+  EXPECT_EQ(degenerated, 2);
+  expect_closed_edge_uses(t);
+}
+
+TEST(FaceConversion, ConeApexAndTorus) {
+  const BrepTranslation cone = shape_to_scene(BRepPrimAPI_MakeCone(5, 0, 12).Shape(), "cone");
+  const Totals c = totals(cone);
+  EXPECT_EQ(c.meshes, 0);
+  const double slant = std::hypot(5.0, 12.0);
+  EXPECT_NEAR(c.measure.area, pi * 5 * slant + pi * 25, close * c.measure.area);
+  EXPECT_NEAR(c.measure.volume, pi * 25 * 12 / 3, close * c.measure.volume);
+  expect_closed_edge_uses(cone);
+
+  const BrepTranslation torus = shape_to_scene(BRepPrimAPI_MakeTorus(20, 4).Shape(), "torus");
+  const Totals s = totals(torus);
+  EXPECT_EQ(s.meshes, 0);
+  EXPECT_NEAR(s.measure.area, 4 * pi * pi * 20 * 4, close * s.measure.area);
+  EXPECT_NEAR(s.measure.volume, 2 * pi * pi * 20 * 16, close * s.measure.volume);
+  expect_closed_edge_uses(torus);
+}
+
+TEST(FaceConversion, HolesRunClockwiseAndNormalsPointOut) {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(40, 30, 20).Shape();
+  const TopoDS_Shape drill = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 15, -5), gp_Dir(0, 0, 1)), 6, 30).Shape();
+  const TopoDS_Shape part = BRepAlgoAPI_Cut(box, drill).Shape();
+  const BrepTranslation t = shape_to_scene(part, "drilled");
+  const Totals sum = totals(t);
+  EXPECT_EQ(sum.meshes, 0);
+  EXPECT_NEAR(sum.measure.area, 2 * (40 * 30 + 40 * 20 + 30 * 20) - 2 * pi * 36 + 2 * pi * 6 * 20, close * sum.measure.area);
+  EXPECT_NEAR(sum.measure.volume, 40 * 30 * 20 - pi * 36 * 20, close * sum.measure.volume);
+  expect_closed_edge_uses(t);
+  int holes = 0;
+  for_each_shape(t.scene, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
+    const auto& s = std::get<TrimmedSurface>(shape.geometry);
+    for (const auto& loop : s.loops) holes += loop_signed_area(loop) < 0 ? 1 : 0;
+    // Outward: from the box's centre towards the face (the hole's wall faces the axis).
+    const NurbsCurve& first = std::get<NurbsCurve>(s.loops[0].segments[0]);
+    const Eigen::Vector2d uv = curve_point(first, 0.5 * (first.domain_start() + first.domain_end())).head<2>();
+    const Eigen::Vector3d p = surface_point(s.surface, uv.x(), uv.y()), n = surface_normal(s.surface, uv.x(), uv.y());
+    const Eigen::Vector3d radial(p.x() - 20, p.y() - 15, 0);
+    const bool wall = std::abs(radial.norm() - 6) < 1e-6 && p.z() > 1e-6 && p.z() < 20 - 1e-6;
+    if (wall) EXPECT_LT(n.dot(radial), 0) << shape.name;
+    else EXPECT_GT(n.dot(p - Eigen::Vector3d(20, 15, 10)), 0) << shape.name;
+  });
+  EXPECT_EQ(holes, 2) << "top and bottom each have one clockwise hole";
+}
+
+TEST(FaceConversion, PeriodicBSplineFaceAcrossItsSeam) {
+  // A periodic B-spline cylinder, and a face on it from u = -1 to 1: across the parameterization's seam.
+  Handle(Geom_Surface) cylinder = new Geom_CylindricalSurface(gp_Ax3(), 7.0);
+  Handle(Geom_BSplineSurface) bspline =
+      GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(cylinder, 0.0, 2 * pi, 0.0, 10.0));
+  if (!bspline->IsUPeriodic()) bspline->SetUPeriodic();
+  ASSERT_TRUE(bspline->IsUPeriodic());
+  Standard_Real u0, u1, v0, v1;
+  bspline->Bounds(u0, u1, v0, v1);
+  const double a = u0 - 0.15 * (u1 - u0), b = u0 + 0.2 * (u1 - u0);
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(bspline, a, b, 0, 10, 1e-7).Face();
+  const OcctReference reference = occt_reference(face);
+  const BrepTranslation t = shape_to_scene(face, "patch");
+  ASSERT_EQ(t.face_count, 1);
+  const Totals sum = totals(t);
+  EXPECT_EQ(sum.meshes, 0);
+  EXPECT_NEAR(sum.measure.area, reference.adaptive_area, close * reference.adaptive_area);
+  const auto& s = std::get<TrimmedSurface>(t.scene.root.shapes[0].geometry);
+  for (const auto& segment : s.loops[0].segments)
+    for (const Eigen::Vector2d p : {segment_start(segment), segment_end(segment)}) {
+      EXPECT_GE(p.x(), s.surface.u_start() - 1e-9);
+      EXPECT_LE(p.x(), s.surface.u_end() + 1e-9);
+    }
+}
+
+TEST(FaceConversion, BrokenFaceBecomesAReportedMesh) {
+  // A square whose last edge's pcurve ends 1 mm away from where the first starts: the wire is open.
+  Handle(Geom_Plane) plane = new Geom_Plane(gp_Ax3());
+  BRep_Builder builder;
+  TopoDS_Face face;
+  builder.MakeFace(face, plane, 1e-7);
+  const std::array<gp_Pnt2d, 5> corners = {gp_Pnt2d(0, 0), gp_Pnt2d(10, 0), gp_Pnt2d(10, 10), gp_Pnt2d(0, 10), gp_Pnt2d(0, 1)};
+  TopoDS_Wire wire;
+  builder.MakeWire(wire);
+  for (int i = 0; i < 4; ++i) {
+    const gp_Vec2d d(corners[i], corners[i + 1]);
+    BRepBuilderAPI_MakeEdge edge(new Geom2d_Line(corners[i], gp_Dir2d(d)), plane, 0.0, d.Magnitude());
+    builder.Add(wire, edge.Edge());
+  }
+  builder.Add(face, wire);
+  BRepLib::BuildCurves3d(face);
+  const BrepTranslation t = shape_to_scene(face, "broken");
+  ASSERT_EQ(t.face_count, 1);
+  ASSERT_EQ(t.fallbacks.size(), 1u);
+  EXPECT_EQ(t.fallbacks[0].face_index, 1);
+  EXPECT_EQ(t.fallbacks[0].surface_type, "Plane");
+  EXPECT_EQ(t.fallbacks[0].node, "broken");
+  EXPECT_FALSE(t.fallbacks[0].reason.empty());
+  EXPECT_EQ(t.fallbacks[0].reason.find('\n'), std::string::npos);
+  ASSERT_EQ(t.scene.root.shapes.size(), 1u);
+  EXPECT_EQ(t.scene.root.shapes[0].name, "face 1 (mesh)");
+  EXPECT_TRUE(std::holds_alternative<TriangleMesh>(t.scene.root.shapes[0].geometry));
+  std::printf("fallback reason: %s\n", t.fallbacks[0].reason.c_str());
+}
+
+}  // namespace
+}  // namespace cadnurbs::test
