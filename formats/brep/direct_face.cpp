@@ -1,8 +1,8 @@
 #include "formats/brep/direct_face.hpp"
 
 #include <BRepTools.hxx>
-#include <Bnd_Box.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <Geom2d_BezierCurve.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
@@ -42,7 +42,8 @@ bool supported(const Handle(Geom_Surface)& s) {
 
 // From one parameter of the analytic surface to the same parameter of its B-spline conversion, along an
 // iso-curve of the B-spline: start and end of the range map to the ends of the B-spline's domain, points
-// between by Newton from the proportional guess, checked in 3D.
+// between to the foot of the perpendicular (Newton from the nearest of 33 samples), which must be within
+// `tolerance` of the analytic point.
 class ParameterMap {
  public:
   ParameterMap(std::function<gp_Pnt(double)> analytic, Handle(Geom_Curve) iso, double a, double b, double s0, double s1,
@@ -197,8 +198,9 @@ std::optional<BSplineFace> direct_face(const TopoDS_Face& face, EdgeNumbering& e
   try {
     // The B-spline's v of the face's middle: along any u iso-curve of these surfaces the nearest point to a
     // point of latitude (height) v has the same v, so the middle iso-curve finds it without knowing u yet.
+    // (The point is not on that iso-curve, only level with it: no distance limit here.)
     const ParameterMap v_middle([&](double v) { return basis->Value(um, v); }, out.surface->UIso(0.5 * (s0 + s1)), v0, v1,
-                                t0, t1, 1e300);
+                                t0, t1, Precision::Infinite());
     const double tm = v_middle(vm);
     const ParameterMap u_map([&](double u) { return basis->Value(u, vm); }, out.surface->VIso(tm), u0, u1, s0, s1,
                              tolerance);

@@ -1,10 +1,7 @@
 #include "formats/brep/face_to_trimmed_surface.hpp"
 
 #include <BRepBuilderAPI_NurbsConvert.hxx>
-#include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
-#include <Geom2dConvert.hxx>
-#include <Geom2d_TrimmedCurve.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BezierSurface.hxx>
 #include <NCollection_DataMap.hxx>
@@ -13,9 +10,6 @@
 #include <TopExp.hxx>
 #include <TopTools_ShapeMapHasher.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Iterator.hxx>
-#include <TopoDS_Vertex.hxx>
-#include <TopoDS_Wire.hxx>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -228,7 +222,12 @@ TrimmedSurface face_to_trimmed_surface(const TopoDS_Face& face, EdgeNumbering& e
   // B-spline faces, and analytic faces bounded by iso-lines (most planes, cylinders and cones of machined
   // parts), convert exactly and fast; the rest go through OCCT's NurbsConvert, whose pcurve projections cost
   // far more.
-  std::optional<BSplineFace> direct = step("direct conversion", [&] { return direct_face(face, edges); });
+  std::optional<BSplineFace> direct;
+  try {
+    direct = direct_face(face, edges);
+  } catch (const Standard_Failure&) {
+    // OCCT refused the direct route (e.g. an unbounded face); NurbsConvert may still manage.
+  }
   BSplineFace converted = direct ? std::move(*direct) : nurbs_converted_face(face, edges);
   Handle(Geom_BSplineSurface)& surface = converted.surface;
   std::vector<WireUses>& wires = converted.wires;

@@ -10,6 +10,14 @@ namespace cadnurbs {
 
 namespace {
 
+// Whether the first and the last `degree + 1` flat knots are equal: a clamped B-spline starts and ends at
+// its end control points.
+bool clamped(const TColStd_Array1OfReal& flat, int degree) {
+  for (int i = 1; i <= degree; ++i)
+    if (flat(flat.Lower() + i) != flat(flat.Lower()) || flat(flat.Upper() - i) != flat(flat.Upper())) return false;
+  return true;
+}
+
 std::vector<double> flat_knots(const TColStd_Array1OfReal& sequence) {
   std::vector<double> out;
   out.reserve(sequence.Length());
@@ -21,11 +29,18 @@ std::vector<double> flat_knots(const TColStd_Array1OfReal& sequence) {
 
 NurbsSurface to_nurbs_surface(const Handle(Geom_BSplineSurface)& input) {
   Handle(Geom_BSplineSurface) surface = input;
-  if (surface->IsUPeriodic() || surface->IsVPeriodic()) {
-    // Unperiodizing keeps the parameters; the copy leaves the caller's surface alone.
+  if (surface->IsUPeriodic() || surface->IsVPeriodic() || !clamped(surface->UKnotSequence(), surface->UDegree()) ||
+      !clamped(surface->VKnotSequence(), surface->VDegree())) {
+    // Unperiodizing keeps the parameters but may leave unclamped ends (OCCT allows them); segmenting to
+    // the surface's own bounds clamps them, same geometry. The copy leaves the caller's surface alone.
     surface = Handle(Geom_BSplineSurface)::DownCast(input->Copy());
     if (surface->IsUPeriodic()) surface->SetUNotPeriodic();
     if (surface->IsVPeriodic()) surface->SetVNotPeriodic();
+    if (!clamped(surface->UKnotSequence(), surface->UDegree()) || !clamped(surface->VKnotSequence(), surface->VDegree())) {
+      Standard_Real u0, u1, v0, v1;
+      surface->Bounds(u0, u1, v0, v1);
+      surface->Segment(u0, u1, v0, v1);
+    }
   }
   NurbsSurface out;
   out.u_order = surface->UDegree() + 1;
@@ -49,9 +64,10 @@ NurbsSurface to_nurbs_surface(const Handle(Geom_BSplineSurface)& input) {
 
 NurbsCurve to_nurbs_curve_2d(const Handle(Geom2d_BSplineCurve)& input) {
   Handle(Geom2d_BSplineCurve) curve = input;
-  if (curve->IsPeriodic()) {
+  if (curve->IsPeriodic() || !clamped(curve->KnotSequence(), curve->Degree())) {
     curve = Handle(Geom2d_BSplineCurve)::DownCast(input->Copy());
-    curve->SetNotPeriodic();
+    if (curve->IsPeriodic()) curve->SetNotPeriodic();
+    if (!clamped(curve->KnotSequence(), curve->Degree())) curve->Segment(curve->FirstParameter(), curve->LastParameter());
   }
   NurbsCurve out;
   out.dimension = 2;
@@ -66,9 +82,10 @@ NurbsCurve to_nurbs_curve_2d(const Handle(Geom2d_BSplineCurve)& input) {
 
 NurbsCurve to_nurbs_curve(const Handle(Geom_BSplineCurve)& input) {
   Handle(Geom_BSplineCurve) curve = input;
-  if (curve->IsPeriodic()) {
+  if (curve->IsPeriodic() || !clamped(curve->KnotSequence(), curve->Degree())) {
     curve = Handle(Geom_BSplineCurve)::DownCast(input->Copy());
-    curve->SetNotPeriodic();
+    if (curve->IsPeriodic()) curve->SetNotPeriodic();
+    if (!clamped(curve->KnotSequence(), curve->Degree())) curve->Segment(curve->FirstParameter(), curve->LastParameter());
   }
   NurbsCurve out;
   out.dimension = 3;

@@ -1,7 +1,8 @@
 #pragma once
 // OCCT B-splines to the core NURBS model: knots expanded with their multiplicities into flat (VRML-style)
 // knot vectors, control points in VRML order (u fastest), weights empty unless rational. Periodic
-// B-splines are written unperiodized (clamped, same geometry and parameters).
+// B-splines are unperiodized and unclamped ends clamped, so every knot vector starts and ends with `order`
+// equal knots (what viewers expect); geometry and parameters stay the same.
 // Internal to formats/brep, step and iges: includes OCCT.
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom_BSplineCurve.hxx>

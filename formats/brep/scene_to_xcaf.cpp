@@ -84,10 +84,11 @@ std::vector<TopoDS_Face> mesh_faces(const TriangleMesh& mesh) {
 
 class XcafWriter {
  public:
-  XcafWriter(const Handle(TDocStd_Document)& document, double sewing_tolerance)
+  XcafWriter(const Handle(TDocStd_Document)& document, double sewing_tolerance, bool face_names)
       : shapes_(XCAFDoc_DocumentTool::ShapeTool(document->Main())),
         colours_(XCAFDoc_DocumentTool::ColorTool(document->Main())),
-        tolerance_(sewing_tolerance) {}
+        tolerance_(sewing_tolerance),
+        face_names_(face_names) {}
 
   // The label of `node` (a part or an assembly), added as a free shape.
   TDF_Label add(const SceneNode& node, const std::string& path) {
@@ -153,11 +154,12 @@ class XcafWriter {
     if (node.colour) colours_->SetColor(part, to_occt(*node.colour), XCAFDoc_ColorSurf);
     // Faces with their own colour or name: sub-shape labels on the sewn faces.
     for (const auto& [face, shape] : faces) {
-      if (!shape->colour && shape->name.empty()) continue;
+      const bool named = face_names_ && !shape->name.empty();
+      if (!shape->colour && !named) continue;
       const TopoDS_Shape sewn = sewing.IsModified(face) ? sewing.Modified(face) : face;
       TDF_Label sub = shapes_->AddSubShape(part, sewn);
       if (sub.IsNull()) continue;
-      if (!shape->name.empty()) set_name(sub, shape->name);
+      if (named) set_name(sub, shape->name);
       if (shape->colour) colours_->SetColor(sub, to_occt(*shape->colour), XCAFDoc_ColorSurf);
     }
     return part;
@@ -198,11 +200,12 @@ class XcafWriter {
   Handle(XCAFDoc_ShapeTool) shapes_;
   Handle(XCAFDoc_ColorTool) colours_;
   double tolerance_;
+  bool face_names_;
 };
 
 }  // namespace
 
-Handle(TDocStd_Document) scene_to_xcaf(const Scene& input) {
+Handle(TDocStd_Document) scene_to_xcaf(const Scene& input, bool face_names) {
   Scene scene = input;
   if (scene.unit.millimetres != 1.0) {
     scale_node(scene.root, scene.unit.millimetres);
@@ -213,7 +216,7 @@ Handle(TDocStd_Document) scene_to_xcaf(const Scene& input) {
   Handle(TDocStd_Document) document;
   XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", document);
   XCAFDoc_DocumentTool::SetLengthUnit(document, 1.0, UnitsMethods_LengthUnit_Millimeter);
-  XcafWriter writer(document, std::max(1e-6, 1e-6 * diagonal));
+  XcafWriter writer(document, std::max(1e-6, 1e-6 * diagonal), face_names);
   writer.add(scene.root, scene.root.name);
   XCAFDoc_DocumentTool::ShapeTool(document->Main())->UpdateAssemblies();
   return document;

@@ -15,8 +15,9 @@ namespace cadnurbs {
 // - a part's trimmed surfaces become faces (trimmed_surface_to_face), its meshes triangular planar faces,
 //   its 3D curves edges; the faces are sewn (BRepBuilderAPI_Sewing, tolerance 1e-6 x the scene's bounding
 //   box diagonal, at least 1e-6 mm) and every shell that closes becomes a solid oriented outward;
-// - names from the nodes and shapes, colours from the nodes (part colour) and shapes (face colour).
+// - names from the nodes and, when `face_names`, the shapes; colours from the nodes (part colour) and shapes
+//   (face colour).
 // Throws GeometryError for geometry OCCT refuses (naming node and shape).
-Handle(TDocStd_Document) scene_to_xcaf(const Scene& scene);
+Handle(TDocStd_Document) scene_to_xcaf(const Scene& scene, bool face_names = true);
 
 }  // namespace cadnurbs

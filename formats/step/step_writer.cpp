@@ -52,6 +52,7 @@ void write_step(const std::string& path, const Scene& scene) {
         throw FileError(path + ": STEP write failed: OCCT could not transfer the scene");
       APIHeaderSection_MakeHeader header(writer.ChangeWriter().Model());
       header.SetName(new TCollection_HAsciiString(std::filesystem::path(path).filename().string().c_str()));
+      header.SetDescriptionValue(1, new TCollection_HAsciiString("cadnurbs scene"));
       header.SetTimeStamp(new TCollection_HAsciiString(output_time_stamp().c_str()));
       header.SetOriginatingSystem(new TCollection_HAsciiString("cadnurbs"));
       header.SetPreprocessorVersion(new TCollection_HAsciiString("cadnurbs with Open CASCADE STEP translator"));

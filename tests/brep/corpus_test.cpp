@@ -44,6 +44,13 @@ void gather_edge_uses(const SceneNode& node, const std::string& path, std::map<s
     gather_edge_uses(node.children[i], path + "/" + std::to_string(i), out);
 }
 
+// The first and last `order` knots equal: what viewers expect (DESIGN.md: clamped knot vectors).
+bool clamped(const std::vector<double>& knots, int order) {
+  for (int i = 1; i < order; ++i)
+    if (knots[i] != knots[0] || knots[knots.size() - 1 - i] != knots.back()) return false;
+  return true;
+}
+
 class BrepCorpus : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BrepCorpus, EveryFaceTranslatedAndMeasured) {
@@ -57,12 +64,17 @@ TEST_P(BrepCorpus, EveryFaceTranslatedAndMeasured) {
   const auto measure_start = std::chrono::steady_clock::now();
 
   EXPECT_EQ(translation.scene.unit.name, "mm");
-  int nurbs = 0, meshes = 0, loops = 0, loops_wrong_way = 0;
+  int nurbs = 0, meshes = 0, loops = 0, loops_wrong_way = 0, unclamped = 0;
   SurfaceMeasure nurbs_measure, mesh_measure;
   for_each_shape(translation.scene, [&](const Shape& shape, const Eigen::Affine3d& world, const Colour&) {
     if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry)) {
       ++nurbs;
       EXPECT_NO_THROW(validate(*t, shape.name)) << relative << " " << shape.name;
+      if (!clamped(t->surface.u_knots, t->surface.u_order) || !clamped(t->surface.v_knots, t->surface.v_order))
+        ++unclamped;
+      for (const auto& loop : t->loops)
+        for (const auto& segment : loop.segments)
+          if (const auto* c = std::get_if<NurbsCurve>(&segment); c && !clamped(c->knots, c->order)) ++unclamped;
       for (size_t l = 0; l < t->loops.size(); ++l) {
         ++loops;
         EXPECT_EQ(t->loops[l].edges.size(), t->loops[l].segments.size()) << shape.name;
@@ -85,6 +97,7 @@ TEST_P(BrepCorpus, EveryFaceTranslatedAndMeasured) {
   EXPECT_EQ(meshes, static_cast<int>(translation.fallbacks.size()));
   EXPECT_EQ(translation.face_count, reference.faces) << "faces in the scene vs OCCT's TopExp::MapShapes";
   EXPECT_EQ(loops_wrong_way, 0) << "loops not outer counter-clockwise / holes clockwise";
+  EXPECT_EQ(unclamped, 0) << "surfaces or trim curves with unclamped knot vectors";
 
   const double area = nurbs_measure.area + mesh_measure.area;
   const double area_difference = area / reference.area - 1;

@@ -176,7 +176,7 @@ TEST(FaceConversion, PeriodicBSplineFaceAcrossItsSeam) {
   EXPECT_NEAR(sum.measure.area, reference.adaptive_area, close * reference.adaptive_area);
   const auto& s = std::get<TrimmedSurface>(t.scene.root.shapes[0].geometry);
   for (const auto& segment : s.loops[0].segments)
-    for (const Eigen::Vector2d p : {segment_start(segment), segment_end(segment)}) {
+    for (const Eigen::Vector2d& p : {segment_start(segment), segment_end(segment)}) {
       EXPECT_GE(p.x(), s.surface.u_start() - 1e-9);
       EXPECT_LE(p.x(), s.surface.u_end() + 1e-9);
     }
