@@ -8,7 +8,7 @@
 namespace cadnurbs {
 
 const std::vector<std::string>& capping_extensions() {
-  static const std::vector<std::string> extensions = {".wrl", ".x3dv", ".x3d", ".stl"};
+  static const std::vector<std::string> extensions = {".wrl", ".x3dv", ".x3d", ".stl", ".step", ".iges"};
   return extensions;
 }
 
