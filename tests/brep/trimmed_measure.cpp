@@ -151,8 +151,8 @@ std::vector<Eigen::Vector2d> interior_points(const NurbsSurface& s, const Eigen:
   auto u_knots = inner_knots(s.u_knots, s.u_order, s.u_count, u0, u1);
   auto v_knots = inner_knots(s.v_knots, s.v_order, s.v_count, v0, v1);
   // Surfaces with very many knots: every knot line would cost too much; a subset still helps.
-  const size_t most = 64;
-  auto thin = [most](std::vector<double>& k) {
+  auto thin = [](std::vector<double>& k) {
+    constexpr size_t most = 64;
     if (k.size() <= most) return;
     std::vector<double> fewer;
     for (size_t i = 0; i < most; ++i) fewer.push_back(k[i * k.size() / most]);
