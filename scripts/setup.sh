@@ -11,7 +11,7 @@ debian_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev
-  libcgal-dev libopenmesh-dev libdraco-dev
+  libcgal-dev libopenmesh-dev libdraco-dev libtbb-dev
   view3dscene xvfb xauth chromium fonts-dejavu-core
 )
 

@@ -3,25 +3,7 @@
 # found them.
 find_package(OpenCASCADE REQUIRED)
 
-# Debian's OCCT 7.6 export names /usr/lib/.../libtbb.so and libtbbmalloc.so in its link interfaces, but
-# those linker names come from libtbb-dev, which the OCCT -dev packages do not pull in. OCCT's own shared
-# libraries already depend on the versioned TBB libraries, so an entry naming a missing file is dropped.
-foreach(occt_target IN LISTS OpenCASCADE_LIBRARIES)
-  if(NOT TARGET ${occt_target})
-    continue()
-  endif()
-  get_target_property(occt_links ${occt_target} INTERFACE_LINK_LIBRARIES)
-  if(NOT occt_links)
-    continue()
-  endif()
-  set(occt_kept)
-  foreach(occt_link IN LISTS occt_links)
-    if(NOT (IS_ABSOLUTE "${occt_link}" AND NOT EXISTS "${occt_link}"))
-      list(APPEND occt_kept "${occt_link}")
-    endif()
-  endforeach()
-  set_target_properties(${occt_target} PROPERTIES INTERFACE_LINK_LIBRARIES "${occt_kept}")
-endforeach()
+# Debian's OCCT 7.6 export names libtbb.so in its link interfaces: scripts/setup.sh installs libtbb-dev.
 
 # cadnurbs_use_occt(target PRIVATE|PUBLIC toolkit...): OCCT headers as system headers (no warnings from
 # them) and the given toolkits. OCC_CONVERT_SIGNALS makes OCC_CATCH_SIGNALS turn a crash inside OCCT

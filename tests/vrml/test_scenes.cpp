@@ -53,7 +53,7 @@ TrimmedSurface trimmed_plate() {
   t.loops.push_back(circle_loop({0.5, 0.5}, 0.4));
   Polyline2D hole;
   hole.points = {{0.4, 0.4}, {0.4, 0.6}, {0.6, 0.6}, {0.6, 0.4}, {0.4, 0.4}};  // clockwise
-  t.loops.push_back(TrimLoop{{hole}});
+  t.loops.push_back(TrimLoop{{hole}, {}});
   return t;
 }
 
