@@ -34,6 +34,7 @@
 #include "formats/brep/trimmed_surface_to_face.hpp"
 #include "formats/step/step_reader.hpp"
 #include "samples/capping.hpp"
+#include "samples/capping_edges.hpp"
 #include "samples/capping_shapes.hpp"
 
 namespace cadnurbs {
@@ -48,33 +49,7 @@ struct Model {
   int fallbacks = 0;  // faces read_step could only give as meshes (not measured, not tessellated)
 };
 
-Eigen::Vector3d on_segment(const TrimmedSurface& t, const TrimSegment& s, double fraction) {
-  const Eigen::Vector2d uv = segment_uv(s, segment_t0(s) + fraction * (segment_t1(s) - segment_t0(s)));
-  return surface_point(t.surface, uv.x(), uv.y());
-}
 
-// The capping's body and lids share edges (as a B-rep would say): the body gets a loop around its
-// domain whose v sides are the lids' loops and whose u sides are one seam.
-void share_capping_edges(Scene& scene) {
-  auto& shapes = scene.root.shapes;
-  TrimmedSurface& body = std::get<TrimmedSurface>(shapes[0].geometry);
-  const NurbsSurface& s = body.surface;
-  const Eigen::Vector2d a(s.u_start(), s.v_start()), b(s.u_end(), s.v_start()), c(s.u_end(), s.v_end()),
-      d(s.u_start(), s.v_end());
-  TrimLoop loop;
-  for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}, std::pair{d, a}})
-    loop.segments.emplace_back(Polyline2D{{p, q}});
-  loop.edges = {{1, false}, {3, false}, {2, false}, {3, true}};
-  body.loops = {loop};
-  for (int lid = 1; lid <= 2; ++lid) {
-    TrimmedSurface& t = std::get<TrimmedSurface>(shapes[lid].geometry);
-    const TrimSegment& side = body.loops[0].segments[lid == 1 ? 0 : 2];
-    const TrimSegment& trim = t.loops[0].segments[0];
-    const bool same = (on_segment(body, side, 0.3) - on_segment(t, trim, 0.3)).norm() <
-                      (on_segment(body, side, 0.3) - on_segment(t, trim, 0.7)).norm();
-    t.loops[0].edges = {{lid, !same}};
-  }
-}
 
 // Cappings: our NURBS, and OCCT faces built from them (B-spline surface + pcurves), sewn.
 Model capping_model(const std::string& name, double d) {

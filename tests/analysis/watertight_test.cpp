@@ -12,39 +12,17 @@
 #include "analysis/sample_trim_segment.hpp"
 #include "analysis_shapes.hpp"
 #include "samples/capping.hpp"
+#include "samples/capping_edges.hpp"
 #include "samples/capping_shapes.hpp"
 
 namespace cadnurbs {
 namespace {
 
-Eigen::Vector3d on_segment(const TrimmedSurface& t, const TrimSegment& s, double fraction) {
-  const Eigen::Vector2d uv = segment_uv(s, segment_t0(s) + fraction * (segment_t1(s) - segment_t0(s)));
-  return surface_point(t.surface, uv.x(), uv.y());
-}
 
-// The capping with edge ids: the body (closed in u, open at its v ends) gets a loop around its
-// domain whose bottom and top sides are the lids' loops and whose u sides are one seam edge.
+// The capping with edge ids (samples/capping_edges.hpp).
 Scene capping_with_edges(const std::string& name) {
   Scene scene = capping_nurbs(bundled_capping(name));
-  auto& shapes = scene.root.shapes;
-  TrimmedSurface& body = std::get<TrimmedSurface>(shapes[0].geometry);
-  const NurbsSurface& s = body.surface;
-  const Eigen::Vector2d a(s.u_start(), s.v_start()), b(s.u_end(), s.v_start()), c(s.u_end(), s.v_end()),
-      d(s.u_start(), s.v_end());
-  TrimLoop loop;
-  for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}, std::pair{d, a}})
-    loop.segments.emplace_back(Polyline2D{{p, q}});
-  loop.edges = {{1, false}, {3, false}, {2, false}, {3, true}};
-  body.loops = {loop};
-  // Each lid's loop runs along its body side one way or the other.
-  for (int lid = 1; lid <= 2; ++lid) {
-    TrimmedSurface& t = std::get<TrimmedSurface>(shapes[lid].geometry);
-    const TrimSegment& side = body.loops[0].segments[lid == 1 ? 0 : 2];
-    const TrimSegment& trim = t.loops[0].segments[0];
-    const bool same = (on_segment(body, side, 0.3) - on_segment(t, trim, 0.3)).norm() <
-                      (on_segment(body, side, 0.3) - on_segment(t, trim, 0.7)).norm();
-    t.loops[0].edges = {{lid, !same}};
-  }
+  share_capping_edges(scene);
   return scene;
 }
 
