@@ -1,7 +1,7 @@
 #include <iomanip>
 #include <iostream>
 
-#include "analysis/tessellate_uniform.hpp"
+#include "analysis/trimmed_surface_area.hpp"
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
 #include "converters/scene_io.hpp"
@@ -12,8 +12,9 @@ namespace cadnurbs {
 namespace {
 const char* kHelp =
     "usage: cadnurbs info IN [--euclidean]\n"
-    "Lists the shapes of IN: surface degrees, control points, knots, trimming loops, meshes,\n"
-    "the bounding box, the unit and the area (NURBS area from a fine uniform tessellation).\n";
+    "Lists the shapes of IN: the source surface type (STEP/IGES), degrees, control points, knots,\n"
+    "trimming loops, meshes, the bounding box, the units and the area (NURBS: integrated over the\n"
+    "trimmed domain).\n";
 
 std::string degrees(const NurbsSurface& s) {
   return std::to_string(s.u_order - 1) + "x" + std::to_string(s.v_order - 1);
@@ -33,6 +34,7 @@ int run_info(const std::vector<std::string>& args) {
   int index = 0;
   for_each_shape(scene, [&](const Shape& shape, const Eigen::Affine3d& world, const Colour&) {
     std::cout << "  [" << index++ << "] " << (shape.name.empty() ? "(unnamed)" : shape.name) << ": ";
+    if (!shape.source_type.empty()) std::cout << shape.source_type << " as ";
     double area = 0;
     if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry)) {
       const auto& s = t->surface;
@@ -40,9 +42,11 @@ int run_info(const std::vector<std::string>& args) {
                 << s.u_count << "x" << s.v_count << " control points, " << s.u_knots.size() + s.v_knots.size()
                 << " knots, " << (s.is_rational() ? "rational" : "polynomial") << ", " << t->loops.size()
                 << " trimming loops";
-      TriangleMesh m = tessellate_uniform(*t, 16);
-      for (auto& p : m.positions) p = world * p;
-      area = mesh_area(m);
+      // Exact for rigid placements (the usual case); a scaled node scales the area by the
+      // product of its two largest stretches only approximately, so integrate in world space.
+      TrimmedSurface placed = *t;
+      for (auto& p : placed.surface.points) p = world * p;
+      area = trimmed_surface_area(placed, 1e-9);
     } else if (const auto* c = std::get_if<NurbsCurve>(&shape.geometry)) {
       std::cout << "NURBS curve, degree " << c->degree() << ", " << c->count() << " control points";
     } else if (const auto* m = std::get_if<TriangleMesh>(&shape.geometry)) {
@@ -58,6 +62,7 @@ int run_info(const std::vector<std::string>& args) {
   const auto box = scene_bounding_box(scene);
   std::cout << "  bounding box (control points and vertices): " << box.min().transpose() << "  to  "
             << box.max().transpose() << " " << scene.unit.name << "\n";
+  std::cout << "  unit: " << scene.unit.name << " (source file: " << scene.source_unit.name << ")\n";
   std::cout << "  total area: " << std::setprecision(8) << total_area << " " << scene.unit.name << "^2\n";
   return 0;
 }

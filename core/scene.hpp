@@ -30,6 +30,7 @@ struct Shape {
   std::string name;  // may be empty
   Geometry geometry;
   std::optional<Colour> colour;  // inherits the node's colour when empty
+  std::string source_type = {};  // what the source file called it (e.g. "Plane"), for reports; may be empty
 };
 
 struct SceneNode {

@@ -75,6 +75,7 @@ void BrepSceneBuilder::add_faces(SceneNode& node, const std::string& node_path, 
       fallbacks_.push_back({node_path, number, converted.surface_type, converted.fallback_reason});
     }
     shape.geometry = converted.geometry;
+    shape.source_type = converted.surface_type;
     if (const Colour* colour = colours.Seek(faces[i])) shape.colour = *colour;
     node.shapes.push_back(std::move(shape));
     ++face_count_;

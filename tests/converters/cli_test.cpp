@@ -139,3 +139,15 @@ TEST_F(Cli, MeshConversionWritesIndexedFaceSets) {
   EXPECT_NE(text.find("IndexedFaceSet"), std::string::npos);
   EXPECT_EQ(text.find("NurbsSurface"), std::string::npos);
 }
+
+TEST_F(Cli, InfoNamesSourceSurfaceTypesAndIntegratesTheTrimmedArea) {
+  const CommandResult r = run("info " + std::string(CADNURBS_SHARED_DIR) + "/corpus/step/screw.step");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("face 4: ToroidalSurface as trimmed NURBS surface, degree 2x2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("face 7: ConicalSurface as trimmed NURBS surface"), std::string::npos) << r.out;
+  // OCCT's BRepGProp::SurfaceProperties of the source gives 1929.332 mm^2 (tests/brep prints it).
+  const auto at = r.out.find("total area: ");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_NEAR(std::stod(r.out.substr(at + 12)), 1929.332, 1929.332 * 1e-3);
+  EXPECT_NE(r.out.find("unit: mm (source file: mm)"), std::string::npos);
+}
