@@ -3,28 +3,13 @@
 #include <algorithm>
 
 #include "core/geometry_error.hpp"
+#include "core/knot_vector.hpp"
 
 namespace cadnurbs {
 
 namespace {
 
 constexpr int kMax = SurfaceEvaluator::max_order;
-
-int span_of(const std::vector<double>& knots, int order, int count, double t) {
-  const int p = order - 1;
-  if (t >= knots[count]) {
-    int s = count - 1;
-    while (s > p && knots[s] == knots[s + 1]) --s;
-    return s;
-  }
-  if (t <= knots[p]) {
-    int s = p;
-    while (s < count - 1 && knots[s] == knots[s + 1]) ++s;
-    return s;
-  }
-  const auto it = std::upper_bound(knots.begin() + p, knots.begin() + count + 1, t);
-  return static_cast<int>(it - knots.begin()) - 1;
-}
 
 // ders[k][j]: k-th derivative (k <= nd) of the j-th non-zero basis function (The NURBS Book A2.3),
 // on fixed-size stack arrays.
@@ -107,8 +92,8 @@ Eigen::Vector3d SurfaceEvaluator::point(double u, double v) const { return jet(u
 SurfaceJet SurfaceEvaluator::jet(double u, double v, int order) const {
   u = std::clamp(u, u_start(), u_end());
   v = std::clamp(v, v_start(), v_end());
-  const int us = span_of(u_knots_, u_order_, u_count_, u);
-  const int vs = span_of(v_knots_, v_order_, v_count_, v);
+  const int us = find_knot_span(u_knots_, u_order_, u_count_, u);
+  const int vs = find_knot_span(v_knots_, v_order_, v_count_, v);
   double nu[3][kMax], nv[3][kMax];
   basis(u_knots_, u_order_, us, u, order, nu);
   basis(v_knots_, v_order_, vs, v, order, nv);

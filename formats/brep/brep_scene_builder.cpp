@@ -17,13 +17,6 @@ namespace cadnurbs {
 
 namespace {
 
-std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  std::replace(text.begin(), text.end(), '\r', ' ');
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text;
-}
-
 std::vector<TopoDS_Face> faces_of(const TopoDS_Shape& container) {
   TopTools_IndexedMapOfShape map;
   TopExp::MapShapes(container, TopAbs_FACE, map);

@@ -9,6 +9,9 @@
 
 namespace cadnurbs {
 
+// `text` with line breaks turned into spaces and trailing spaces dropped (messages are one line).
+std::string one_line(std::string text);
+
 // "OCCT <exception class>: <message>" on one line; "OCCT crashed (...)" for a crash OCC_CATCH_SIGNALS caught.
 std::string occt_failure_text(const Standard_Failure& failure);
 
