@@ -12,7 +12,12 @@ namespace cadnurbs {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+// CGAL leaves an int info uninitialised; vertices it creates itself (constraint crossings) must be
+// recognisable as unnamed.
+struct VertexId {
+  int value = -1;
+};
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<VertexId, Kernel>;
 using FaceBase =
     CGAL::Triangulation_face_base_with_info_2<int, Kernel, CGAL::Constrained_triangulation_face_base_2<Kernel>>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
@@ -27,16 +32,16 @@ struct DomainTriangulation::Impl {
   std::vector<Eigen::Vector2d> uvs;
 
   int add(Cdt::Vertex_handle v, const Eigen::Vector2d& uv) {
-    v->info() = static_cast<int>(handles.size());
+    v->info().value = static_cast<int>(handles.size());
     handles.push_back(v);
     uvs.push_back(uv);
-    return v->info();
+    return v->info().value;
   }
   // Vertices CGAL created at constraint crossings have no id yet.
   void name_new_vertices() {
     if (cdt.number_of_vertices() == handles.size()) return;
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-      if (v->info() < 0) add(v, Eigen::Vector2d(v->point().x() / su, v->point().y() / sv));
+      if (v->info().value < 0) add(v, Eigen::Vector2d(v->point().x() / su, v->point().y() / sv));
   }
 };
 
@@ -50,8 +55,7 @@ DomainTriangulation::~DomainTriangulation() = default;
 int DomainTriangulation::insert(const Eigen::Vector2d& uv) {
   const auto before = impl_->cdt.number_of_vertices();
   auto v = impl_->cdt.insert(Kernel::Point_2(uv.x() * impl_->su, uv.y() * impl_->sv));
-  if (impl_->cdt.number_of_vertices() == before) return v->info();
-  v->info() = -1;
+  if (impl_->cdt.number_of_vertices() == before) return v->info().value;
   return impl_->add(v, uv);
 }
 
@@ -116,7 +120,7 @@ std::vector<std::array<int, 3>> DomainTriangulation::inside_triangles() const {
   }
   std::vector<std::array<int, 3>> out;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    if (f->info() % 2 == 1) out.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+    if (f->info() % 2 == 1) out.push_back({f->vertex(0)->info().value, f->vertex(1)->info().value, f->vertex(2)->info().value});
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include "analysis/point_in_loops.hpp"
 #include "analysis/point_inversion.hpp"
 #include "analysis/sample_trim_segment.hpp"
+#include "analysis/sample_triangles.hpp"
 #include "analysis/surface_evaluator.hpp"
 #include "analysis/triangulate_polygon.hpp"
 #include "core/geometry_error.hpp"
@@ -62,20 +63,31 @@ std::vector<double> grid(const SurfaceEvaluator& e, bool along_u, double spacing
   const double o0 = along_u ? s.v_start() : s.u_start(), o1 = along_u ? s.v_end() : s.u_end();
   std::vector<double> out{b.front()};
   for (size_t i = 0; i + 1 < b.size(); ++i) {
-    double longest = 0;
+    double longest = 0, turning = 0;
     for (int k = 0; k <= 4; ++k) {
       const double other = o0 + (o1 - o0) * k / 4;
-      double len = 0;
-      Eigen::Vector3d prev;
+      double len = 0, angle = 0;
+      Eigen::Vector3d prev, prev_step = Eigen::Vector3d::Zero();
       for (int m = 0; m <= 8; ++m) {
         const double x = b[i] + (b[i + 1] - b[i]) * m / 8;
         const Eigen::Vector3d p = along_u ? e.point(x, other) : e.point(other, x);
-        if (m > 0) len += (p - prev).norm();
+        if (m > 0) {
+          const Eigen::Vector3d step = p - prev;
+          len += step.norm();
+          if (step.norm() > 0 && prev_step.norm() > 0)
+            angle += std::acos(std::clamp(step.normalized().dot(prev_step.normalized()), -1.0, 1.0));
+          if (step.norm() > 0) prev_step = step;
+        }
         prev = p;
       }
       longest = std::max(longest, len);
+      turning = std::max(turning, angle);
     }
-    const int n = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, cap);
+    // Steps of at most `spacing` and of at most 1/32 turn: the reference triangles (every second
+    // line) then stay close enough to the surface to start Newton near the right foot.
+    const int by_length = static_cast<int>(std::ceil(longest / spacing));
+    const int by_turning = static_cast<int>(std::ceil(turning / (M_PI / 16)));
+    const int n = std::clamp(std::max(by_length, by_turning), 1, cap);
     for (int m = 1; m < n; ++m) out.push_back(b[i] + (b[i + 1] - b[i]) * m / n);
     out.push_back(b[i + 1]);
   }
@@ -123,13 +135,7 @@ class Measurer {
   Measurer(const TriangleMesh& mesh, std::vector<TrimmedSurface> surfaces, const DeviationOptions& options)
       : mesh_(mesh) {
     if (mesh.triangles.empty()) throw GeometryError("measure_deviation", "the mesh has no triangles");
-    spacing_ = options.spacing;
-    if (!(spacing_ > 0)) {
-      double total = 0;
-      for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) total += (mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm();
-      spacing_ = total / (3.0 * 3.0 * mesh.triangles.size());
-    }
+    spacing_ = options.spacing > 0 ? options.spacing : default_sample_spacing(mesh);
     for (size_t i = 0; i < surfaces.size(); ++i) {
       validate(surfaces[i], "surface " + std::to_string(i));
       auto f = std::make_unique<MeasuredFace>();
@@ -155,20 +161,7 @@ class Measurer {
     DeviationMeasure out;
     double sum_a = 0, sum_b = 0;
     // Mesh -> surface: corners once, then each triangle's lattice without its corners.
-    std::vector<Eigen::Vector3d> points = mesh_.positions;
-    for (const auto& t : mesh_.triangles) {
-      const Eigen::Vector3d& a = mesh_.positions[t[0]];
-      const Eigen::Vector3d& b = mesh_.positions[t[1]];
-      const Eigen::Vector3d& c = mesh_.positions[t[2]];
-      const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-      const int n = std::clamp(static_cast<int>(std::ceil(longest / spacing_)), 3, 64);
-      for (int i = 0; i <= n; ++i)
-        for (int j = 0; i + j <= n; ++j) {
-          const int k = n - i - j;
-          if (i == n || j == n || k == n) continue;
-          points.push_back((a * k + b * i + c * j) / n);
-        }
-    }
+    const std::vector<Eigen::Vector3d> points = sample_triangles(mesh_, spacing_);
     for (double d : in_parallel(points, [this](const Eigen::Vector3d& p) { return to_surface(p); }))
       add(out.mesh_to_surface, sum_a, d);
     // Surface -> mesh.
@@ -242,7 +235,7 @@ class Measurer {
         for (double u : us) surface_samples_.push_back(e.point(u, e.v_start())), surface_samples_.push_back(e.point(u, e.v_end()));
         for (double v : vs) surface_samples_.push_back(e.point(e.u_start(), v)), surface_samples_.push_back(e.point(e.u_end(), v));
       }
-      const PlanarTriangulation cdt = triangulate_polygon(ref_loops, coarse);
+      const PlanarTriangulation cdt = reference_triangulation(e, ref_loops, std::move(coarse));
       for (const auto& t : cdt.triangles) {
         const K::Triangle_3 tri(cg(e.point(cdt.points[t[0]].x(), cdt.points[t[0]].y())),
                                 cg(e.point(cdt.points[t[1]].x(), cdt.points[t[1]].y())),
@@ -280,6 +273,27 @@ class Measurer {
       boundary_tree_.insert(boundary_segments_.begin(), boundary_segments_.end());
       boundary_tree_.accelerate_distance_queries();
     }
+  }
+
+  // The trimmed domain triangulated so that every triangle's centroid lies within a quarter of the
+  // sample spacing of the surface: a reference triangle far below a curved surface (loop points
+  // joined across a narrow cylinder face) would hide the face from the nearest-triangle search.
+  PlanarTriangulation reference_triangulation(const SurfaceEvaluator& e,
+                                              const std::vector<std::vector<Eigen::Vector2d>>& loops,
+                                              std::vector<Eigen::Vector2d> interior) const {
+    PlanarTriangulation cdt = triangulate_polygon(loops, interior);
+    for (int round = 0; round < 8; ++round) {
+      size_t added = 0;
+      for (const auto& t : cdt.triangles) {
+        const Eigen::Vector2d c = (cdt.points[t[0]] + cdt.points[t[1]] + cdt.points[t[2]]) / 3.0;
+        Eigen::Vector3d chord = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 3; ++k) chord += e.point(cdt.points[t[k]].x(), cdt.points[t[k]].y()) / 3.0;
+        if ((e.point(c.x(), c.y()) - chord).norm() > 0.25 * spacing_) interior.push_back(c), ++added;
+      }
+      if (added == 0) break;
+      cdt = triangulate_polygon(loops, interior);
+    }
+    return cdt;
   }
 
   static Eigen::Vector3d barycentric(const K::Triangle_3& t, const Eigen::Vector3d& p) {
@@ -339,9 +353,15 @@ class Measurer {
     const Eigen::Vector2d start = l[0] * r.uv[0] + l[1] * r.uv[1] + l[2] * r.uv[2];
     const MeasuredFace& f = *faces_[r.face];
     const SurfaceEvaluator& e = *f.eval;
+    // The start is a surface point too: every candidate inside the trims bounds the distance.
+    const double start_distance = (e.point(start.x(), start.y()) - p).norm();
+    if (f.region->inside(start)) best = std::min(best, start_distance);
     const SurfaceProjection proj = project_to_surface(e, p, start);
     if (!f.region->inside(proj.uv)) return;
     best = std::min(best, proj.distance);
+    // Settled only when the foot is no farther than the reference triangle: otherwise Newton may
+    // have gone to another foot (a coarse reference triangle, a torus), and the search goes on.
+    if (proj.distance > 1.01 * (near - p).norm()) return;
     const bool on_edge = proj.uv.x() <= e.u_start() || proj.uv.x() >= e.u_end() || proj.uv.y() <= e.v_start() ||
                          proj.uv.y() >= e.v_end();
     if (!on_edge) settled = true;

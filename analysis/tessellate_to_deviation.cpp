@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <set>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -32,6 +33,9 @@ struct LoopPoint {
   int node;  // model node id: points with the same node are one mesh vertex
   const TrimSegment* degenerate = nullptr;
   double t = 0, t_next = 0;
+  // The chord from here to the next point is span `span` (samples span, span + 1) of model curve
+  // `curve`; -1 when it cannot be split (a collapsed segment, or samples of its own).
+  int curve = -1, span = -1;
 };
 
 struct Face {
@@ -59,6 +63,7 @@ struct ModelCurve {
   std::vector<Eigen::Vector3d> points;  // in curve direction, ends included, origin face frame
   std::vector<Eigen::Vector2d> uvs;     // on the origin face
   std::vector<int> nodes;
+  std::vector<double> ts;   // parameters on the origin segment
   std::vector<double> arc;  // cumulative chord length fraction
 };
 
@@ -654,7 +659,16 @@ class Tessellator {
       const CurveUse& first = curves_[c].uses.front();
       guarded(faces_[first.face], [&] { sample_curve(static_cast<int>(c)); });
     }
-    for (size_t fi = 0; fi < faces_.size(); ++fi) guarded(faces_[fi], [&] { collect_loop_points(static_cast<int>(fi)); });
+    // Coarse chords of nearby loops (a small hole near an outer boundary) may cross in (u,v), and a
+    // small closed edge may come out as fewer than 3 points: split those chords on their curves, on
+    // every face that uses them, until each face's loops are simple.
+    for (int round = 0;; ++round) {
+      for (size_t fi = 0; fi < faces_.size(); ++fi) guarded(faces_[fi], [&] { collect_loop_points(static_cast<int>(fi)); });
+      std::set<std::pair<int, int>> splits;
+      for (const auto& f : faces_) chords_to_split(f, splits);
+      if (splits.empty() || round == 12) break;
+      for (auto it = splits.rbegin(); it != splits.rend(); ++it) split_span(it->first, it->second);
+    }
     for (auto& f : faces_) guarded(f, [&] { FaceMesher(f, d_, report_).run(); });
     report_.faces += static_cast<int>(faces_.size());
   }
@@ -664,7 +678,10 @@ class Tessellator {
   double d_;
   TessellationReport& report_;
   std::vector<ModelCurve> curves_;
-  std::map<int, int> curve_of_edge_;
+  // An edge id names one edge of one solid; a solid placed several times (assembly instances) has
+  // several curves per edge, one per distinct world transform.
+  std::map<std::pair<int, int>, int> curve_of_edge_;
+  std::vector<Eigen::Matrix4d> placements_;
   UnionFind ends_;                    // 2 per curve: start, end
   std::vector<int> node_of_class_;    // vertex class root -> node id
   std::vector<Eigen::Vector3d> node_point_;
@@ -718,7 +735,7 @@ class Tessellator {
           if (ref.edge < 0) {
             ids.push_back(new_curve());
           } else {
-            auto [it, fresh] = curve_of_edge_.emplace(ref.edge, 0);
+            auto [it, fresh] = curve_of_edge_.emplace(std::pair{placement_of(f.world), ref.edge}, 0);
             if (fresh) it->second = new_curve();
             ids.push_back(it->second);
           }
@@ -734,6 +751,13 @@ class Tessellator {
     for (size_t l = 0; l < f.loops.size(); ++l)
       for (size_t k = 0; k < f.loops[l].segments.size(); ++k)
         curves_[f.curve[l][k]].uses.push_back({fi, static_cast<int>(l), static_cast<int>(k), static_cast<bool>(f.reversed[l][k])});
+  }
+
+  int placement_of(const Eigen::Affine3d& world) {
+    for (size_t i = 0; i < placements_.size(); ++i)
+      if (placements_[i] == world.matrix()) return static_cast<int>(i);
+    placements_.push_back(world.matrix());
+    return static_cast<int>(placements_.size()) - 1;
   }
 
   const TrimSegment& segment(const CurveUse& u) const { return faces_[u.face].loops[u.loop].segments[u.segment]; }
@@ -810,6 +834,7 @@ class Tessellator {
       if (k > 0) length += (samples[k].point - samples[k - 1].point).norm();
       curve.points.push_back(samples[k].point);
       curve.uvs.push_back(samples[k].uv);
+      curve.ts.push_back(samples[k].t);
       curve.arc.push_back(length);
       curve.nodes.push_back(k == 0 ? first_node : k + 1 == samples.size() ? last_node : add_node(samples[k].point, u.face));
     }
@@ -844,17 +869,19 @@ class Tessellator {
       for (size_t k = 0; k + 1 < n; ++k) {
         const size_t i = use.reversed ? n - 1 - k : k;
         out.push_back({curve.uvs[i], curve.points[i], curve.nodes[i]});
+        out.back().curve = curve_index;
+        out.back().span = static_cast<int>(use.reversed ? i - 1 : i);
       }
       return;
     }
-    if (!invert_use(f, use, s, curve, out)) {
+    if (!invert_use(f, use, s, curve, curve_index, out)) {
       ++report_.unshared_edge_uses;
       own_samples(f, s, out);
     }
   }
 
   // The shared samples located on this face; false when they do not lie on it within D.
-  bool invert_use(Face& f, const CurveUse& use, const TrimSegment& s, const ModelCurve& curve,
+  bool invert_use(Face& f, const CurveUse& use, const TrimSegment& s, const ModelCurve& curve, int curve_index,
                   std::vector<LoopPoint>& out) {
     const SurfaceEvaluator& e = *f.eval;
     const double t0 = segment_t0(s), t1 = segment_t1(s);
@@ -887,6 +914,8 @@ class Tessellator {
         (e.point(end_uv.x(), end_uv.y()) - end_point).norm() > d_)
       return false;
     mine.push_back({start_uv, start_point, start_node});
+    mine.back().curve = curve_index;
+    mine.back().span = static_cast<int>(use.reversed ? n - 2 : 0);
     double t_prev = t0;
     for (size_t k = 1; k + 1 < n; ++k) {
       const size_t i = use.reversed ? n - 1 - k : k;
@@ -901,9 +930,89 @@ class Tessellator {
       if (on_surface.distance < on_curve.distance && (on_surface.uv - uv).norm() < 0.01 * step) uv = on_surface.uv;
       t_prev = on_curve.t;
       mine.push_back({uv, p, curve.nodes[i]});
+      mine.back().curve = curve_index;
+      mine.back().span = static_cast<int>(use.reversed ? i - 1 : i);
     }
     out.insert(out.end(), mine.begin(), mine.end());
     return true;
+  }
+
+  // Splittable chords (curve, span) of face f that cross another chord of its loops, or that belong
+  // to a loop of fewer than 3 distinct points.
+  void chords_to_split(const Face& f, std::set<std::pair<int, int>>& out) const {
+    struct Chord {
+      Eigen::Vector2d a, b;
+      int curve, span;
+    };
+    std::vector<Chord> chords;
+    Eigen::AlignedBox2d box;
+    for (const auto& loop : f.points) {
+      std::vector<Eigen::Vector2d> distinct;
+      for (size_t k = 0; k < loop.size(); ++k) {
+        const LoopPoint& p = loop[k];
+        const Eigen::Vector2d& q = loop[(k + 1) % loop.size()].uv;
+        box.extend(p.uv);
+        if (std::none_of(distinct.begin(), distinct.end(), [&](const Eigen::Vector2d& x) { return x == p.uv; }))
+          distinct.push_back(p.uv);
+        if (p.uv != q) chords.push_back({p.uv, q, p.curve, p.span});
+      }
+      if (distinct.size() < 3)
+        for (const auto& p : loop)
+          if (p.curve >= 0) out.emplace(p.curve, p.span);
+    }
+    if (chords.size() < 2) return;
+    // Buckets of a uniform grid over the loops' box; pairs are tested within a bucket.
+    const int n = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(chords.size()))), 1, 256);
+    const Eigen::Vector2d lo = box.min(), size = (box.max() - box.min()).cwiseMax(1e-300);
+    auto cell = [&](double x, double extent, double origin) {
+      return std::clamp(static_cast<int>((x - origin) / extent * n), 0, n - 1);
+    };
+    std::vector<std::vector<int>> buckets(static_cast<size_t>(n) * n);
+    for (size_t c = 0; c < chords.size(); ++c) {
+      const Chord& h = chords[c];
+      const int i0 = cell(std::min(h.a.x(), h.b.x()), size.x(), lo.x()), i1 = cell(std::max(h.a.x(), h.b.x()), size.x(), lo.x());
+      const int j0 = cell(std::min(h.a.y(), h.b.y()), size.y(), lo.y()), j1 = cell(std::max(h.a.y(), h.b.y()), size.y(), lo.y());
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) buckets[i + j * n].push_back(static_cast<int>(c));
+    }
+    auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+      const double x = (q - p).x() * (r - p).y() - (q - p).y() * (r - p).x();
+      return (x > 0) - (x < 0);
+    };
+    for (const auto& bucket : buckets)
+      for (size_t x = 0; x < bucket.size(); ++x)
+        for (size_t y = x + 1; y < bucket.size(); ++y) {
+          const Chord& p = chords[bucket[x]];
+          const Chord& q = chords[bucket[y]];
+          if (p.a == q.a || p.a == q.b || p.b == q.a || p.b == q.b) continue;  // neighbours
+          if (side(p.a, p.b, q.a) * side(p.a, p.b, q.b) > 0 || side(q.a, q.b, p.a) * side(q.a, q.b, p.b) > 0) continue;
+          if (side(p.a, p.b, q.a) == 0 && side(p.a, p.b, q.b) == 0) {
+            // Collinear: crossing only when they overlap.
+            const Eigen::Vector2d d = p.b - p.a;
+            const double s0 = (q.a - p.a).dot(d), s1 = (q.b - p.a).dot(d);
+            if (std::max(s0, s1) <= 0 || std::min(s0, s1) >= d.squaredNorm()) continue;
+          }
+          if (p.curve >= 0) out.emplace(p.curve, p.span);
+          if (q.curve >= 0) out.emplace(q.curve, q.span);
+        }
+  }
+
+  // A new sample in the middle (in the origin segment's parameter) of span `span` of curve c.
+  void split_span(int c, int span) {
+    ModelCurve& curve = curves_[c];
+    const CurveUse& u = curve.uses.front();
+    const TrimSegment& s = segment(u);
+    const double t = 0.5 * (curve.ts[span] + curve.ts[span + 1]);
+    const Eigen::Vector2d uv = segment_uv(s, t);
+    const Eigen::Vector3d p = faces_[u.face].eval->point(uv.x(), uv.y());
+    const auto at = static_cast<std::ptrdiff_t>(span + 1);
+    curve.points.insert(curve.points.begin() + at, p);
+    curve.uvs.insert(curve.uvs.begin() + at, uv);
+    curve.ts.insert(curve.ts.begin() + at, t);
+    curve.nodes.insert(curve.nodes.begin() + at, add_node(p, u.face));
+    curve.arc.assign(1, 0.0);
+    for (size_t k = 1; k < curve.points.size(); ++k) curve.arc.push_back(curve.arc.back() + (curve.points[k] - curve.points[k - 1]).norm());
+    for (auto& a : curve.arc) a = curve.arc.back() > 0 ? a / curve.arc.back() : 0;
   }
 
   void own_samples(Face& f, const TrimSegment& s, std::vector<LoopPoint>& out) {

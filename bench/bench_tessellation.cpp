@@ -36,9 +36,13 @@
 #include "samples/capping.hpp"
 #include "samples/capping_edges.hpp"
 #include "samples/capping_shapes.hpp"
+#include "tests/brep/occt_mesh.hpp"
 
 namespace cadnurbs {
 namespace {
+
+using test::occt_mesh;
+using test::occt_triangles;
 
 struct Model {
   std::string name;
@@ -86,38 +90,6 @@ Model step_model(const std::string& file, double relative) {
   reader.TransferRoots();
   m.shape = reader.OneShape();
   return m;
-}
-
-TriangleMesh occt_triangles(const TopoDS_Shape& shape) {
-  TriangleMesh mesh;
-  for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
-    const TopoDS_Face& face = TopoDS::Face(ex.Current());
-    TopLoc_Location loc;
-    const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(face, loc);
-    if (tri.IsNull()) continue;
-    const int base = static_cast<int>(mesh.positions.size());
-    for (int i = 1; i <= tri->NbNodes(); ++i) {
-      const gp_Pnt p = tri->Node(i).Transformed(loc.Transformation());
-      mesh.positions.emplace_back(p.X(), p.Y(), p.Z());
-    }
-    const bool reversed = face.Orientation() == TopAbs_REVERSED;
-    for (int k = 1; k <= tri->NbTriangles(); ++k) {
-      int a, b, c;
-      tri->Triangle(k).Get(a, b, c);
-      if (reversed) std::swap(b, c);
-      mesh.triangles.push_back({base + a - 1, base + b - 1, base + c - 1});
-    }
-  }
-  return mesh;
-}
-
-void occt_mesh(const TopoDS_Shape& shape, double d) {
-  IMeshTools_Parameters p;
-  p.Deflection = d;
-  p.Angle = 1.5;  // radians: large, so the deflection decides
-  p.Relative = Standard_False;
-  p.InParallel = Standard_False;
-  BRepMesh_IncrementalMesh mesher(shape, p);
 }
 
 struct Row {

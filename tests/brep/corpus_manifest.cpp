@@ -1,10 +1,17 @@
 #include "corpus_manifest.hpp"
 
+#include <cctype>
 #include <fstream>
 
 namespace cadnurbs::test {
 
 std::string corpus_file(const std::string& relative) { return std::string(CADNURBS_SHARED_DIR) + "/corpus/" + relative; }
+
+std::string corpus_test_name(const std::string& relative) {
+  std::string name;
+  for (char c : relative) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return name;
+}
 
 std::vector<std::string> corpus_paths(const std::vector<std::string>& prefixes) {
   std::vector<std::string> out;

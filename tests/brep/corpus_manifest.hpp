@@ -9,6 +9,9 @@ namespace cadnurbs::test {
 // (e.g. "step/", "iges/"), in file order. Empty when the manifest cannot be read.
 std::vector<std::string> corpus_paths(const std::vector<std::string>& prefixes);
 
+// A corpus path as a test name (letters and digits kept, the rest '_').
+std::string corpus_test_name(const std::string& relative);
+
 // Absolute path of a corpus file.
 std::string corpus_file(const std::string& relative);
 

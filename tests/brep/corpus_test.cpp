@@ -139,13 +139,8 @@ TEST_P(BrepCorpus, EveryFaceTranslatedAndMeasured) {
   RecordProperty("area_relative_difference", std::to_string(area_difference));
 }
 
-std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name;
-  for (char c : info.param) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  return name;
-}
-
-INSTANTIATE_TEST_SUITE_P(Corpus, BrepCorpus, ::testing::ValuesIn(corpus_paths({"step/", "iges/"})), test_name);
+INSTANTIATE_TEST_SUITE_P(Corpus, BrepCorpus, ::testing::ValuesIn(corpus_paths({"step/", "iges/"})),
+                         [](const auto& info) { return corpus_test_name(info.param); });
 
 TEST(BrepCorpusManifest, ListsStepAndIgesFiles) {
   const auto paths = corpus_paths({"step/", "iges/"});

@@ -1,0 +1,17 @@
+#pragma once
+// Two-sided distance between two triangle meshes (e.g. our tessellation and OCCT's BRepMesh of the same
+// part): points sampled on each mesh (sample_triangles) to the nearest point of the other (CGAL AABB
+// tree of its triangles). The maxima are attained sample distances: a measure, not a bound.
+#include "analysis/measure_deviation.hpp"
+
+namespace cadnurbs {
+
+struct MeshDistance {
+  DeviationStats a_to_b, b_to_a, overall;
+};
+
+// spacing 0: a third of the smaller of the two meshes' mean edge lengths. Refuses (GeometryError) a
+// mesh without non-degenerate triangles.
+MeshDistance mesh_distance(const TriangleMesh& a, const TriangleMesh& b, double spacing = 0);
+
+}  // namespace cadnurbs
