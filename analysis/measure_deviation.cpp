@@ -182,6 +182,9 @@ class Measurer {
   std::vector<K::Triangle_3> reference_triangles_;
   std::vector<ReferenceTriangle> reference_info_;
   TriangleTree reference_tree_;
+  // Per face: its reference triangles' tree and box, for the search that goes on past the nearest face.
+  std::vector<std::unique_ptr<TriangleTree>> face_trees_;
+  std::vector<Eigen::AlignedBox3d> face_boxes_;
   std::vector<K::Segment_3> boundary_segments_;
   std::vector<BoundaryPiece> boundary_info_;
   SegmentTree boundary_tree_;
@@ -211,9 +214,11 @@ class Measurer {
   static void finish(DeviationStats& s, double sum) { s.rms = s.samples ? std::sqrt(sum / s.samples) : 0.0; }
 
   void build_references() {
+    std::vector<std::pair<size_t, size_t>> face_ranges;  // reference triangles of each face
     for (size_t fi = 0; fi < faces_.size(); ++fi) {
       MeasuredFace& f = *faces_[fi];
       const SurfaceEvaluator& e = *f.eval;
+      const size_t first_triangle = reference_triangles_.size();
       const auto loops = dense_loops(f.trimmed, e, spacing_);
       std::vector<std::vector<Eigen::Vector2d>> polys;
       for (const auto& l : loops) polys.push_back(l.uv);
@@ -244,6 +249,7 @@ class Measurer {
         reference_triangles_.push_back(tri);
         reference_info_.push_back({static_cast<int>(fi), {cdt.points[t[0]], cdt.points[t[1]], cdt.points[t[2]]}});
       }
+      face_ranges.emplace_back(first_triangle, reference_triangles_.size());
       // Boundary: every dense loop chord, and the loop points as surface samples.
       for (size_t l = 0; l < loops.size(); ++l) {
         const auto& d = loops[l];
@@ -269,6 +275,20 @@ class Measurer {
     if (reference_triangles_.empty()) throw GeometryError("measure_deviation", "the surfaces have no area");
     reference_tree_.insert(reference_triangles_.begin(), reference_triangles_.end());
     reference_tree_.accelerate_distance_queries();
+    for (const auto& [first, last] : face_ranges) {
+      Eigen::AlignedBox3d box;
+      for (size_t i = first; i < last; ++i)
+        for (int k = 0; k < 3; ++k) box.extend(eg(reference_triangles_[i][k]));
+      face_boxes_.push_back(box);
+      auto tree = std::make_unique<TriangleTree>();
+      if (last > first) {
+        tree->insert(reference_triangles_.begin() + static_cast<std::ptrdiff_t>(first),
+                     reference_triangles_.begin() + static_cast<std::ptrdiff_t>(last));
+        tree->accelerate_distance_queries();
+        tree->closest_point(reference_triangles_[first][0]);  // built before threads share it
+      }
+      face_trees_.push_back(std::move(tree));
+    }
     if (!boundary_segments_.empty()) {
       boundary_tree_.insert(boundary_segments_.begin(), boundary_segments_.end());
       boundary_tree_.accelerate_distance_queries();
@@ -313,35 +333,19 @@ class Measurer {
     bool settled = false;
     project_from(p, static_cast<size_t>(hit.second - reference_triangles_.begin()), eg(hit.first), best, settled);
     if (settled) return best;
-    // The projection ran into the edge of the domain (a seam: the foot is on the other side) or out
-    // of the trims: start again from every reference triangle near p.
-    const double r = 2 * near + spacing_;
-    const K::Iso_cuboid_3 box(K::Point_3(p.x() - r, p.y() - r, p.z() - r), K::Point_3(p.x() + r, p.y() + r, p.z() + r));
-    std::vector<TriangleTree::Primitive_id> around;
-    reference_tree_.all_intersected_primitives(box, std::back_inserter(around));
-    std::vector<std::pair<double, size_t>> starts;
-    for (const auto& id : around) starts.emplace_back(std::sqrt(CGAL::squared_distance(*id, cg(p))), static_cast<size_t>(id - reference_triangles_.begin()));
-    std::sort(starts.begin(), starts.end());
-    for (size_t k = 0; k < std::min<size_t>(starts.size(), 12); ++k) {
-      const K::Triangle_3& t = reference_triangles_[starts[k].second];
-      project_from(p, starts[k].second, closest_on(t, p), best, settled);
+    // The projection ran into the edge of the domain (a seam: the foot is on the other side), out of
+    // the trims, or to a farther foot: start again from the nearest reference triangle of every face
+    // that may hold a nearer foot. Reference triangles lie within a quarter spacing of their surface
+    // (reference_triangulation), so such a face's box is within this reach.
+    const double reach = std::min(best, near + 0.5 * spacing_);
+    for (size_t fi = 0; fi < faces_.size(); ++fi) {
+      if (face_boxes_[fi].isEmpty() || face_boxes_[fi].exteriorDistance(p) > reach) continue;
+      const auto face_hit = face_trees_[fi]->closest_point_and_primitive(cg(p));
+      const size_t index = static_cast<size_t>(face_hit.second - reference_triangles_.begin());
+      bool face_settled = false;
+      project_from(p, index, eg(face_hit.first), best, face_settled);
     }
     return boundary_segments_.empty() ? best : std::min(best, to_boundary(p));
-  }
-
-  static Eigen::Vector3d closest_on(const K::Triangle_3& t, const Eigen::Vector3d& p) {
-    // The closest point of a triangle: the projection on its plane if inside, else on an edge.
-    const Eigen::Vector3d a = eg(t[0]), b = eg(t[1]), c = eg(t[2]);
-    const Eigen::Vector3d l = barycentric(t, p);
-    if (l.minCoeff() >= 0) return l[0] * a + l[1] * b + l[2] * c;
-    Eigen::Vector3d best = a;
-    for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
-      const double len2 = (y - x).squaredNorm();
-      const double s = len2 > 0 ? std::clamp((p - x).dot(y - x) / len2, 0.0, 1.0) : 0.0;
-      const Eigen::Vector3d q = x + s * (y - x);
-      if ((q - p).norm() < (best - p).norm()) best = q;
-    }
-    return best;
   }
 
   // Newton from the (u,v) of `near` on reference triangle `index`; a foot inside the trims and

@@ -119,8 +119,9 @@ double triangle_deviation_bound(const Eigen::Vector2d& a, const Eigen::Vector2d&
   const double hu = std::max({a.x(), b.x(), c.x()}) - std::min({a.x(), b.x(), c.x()});
   const double hv = std::max({a.y(), b.y(), c.y()}) - std::min({a.y(), b.y(), c.y()});
   double su = m.uu, sv = m.vv;
-  if (m.uv > 0) {
-    const double t = (hu > 0 && hv > 0) ? hv / hu : 1.0;
+  // A triangle without extent in u or in v (a sliver along a seam) has no cross term at all.
+  if (m.uv > 0 && hu > 0 && hv > 0) {
+    const double t = hv / hu;
     su += t * m.uv;
     sv += m.uv / t;
   }

@@ -60,6 +60,7 @@ struct CurveUse {
 struct ModelCurve {
   std::vector<CurveUse> uses;
   bool degenerate = false;
+  bool unnamed = false;  // a trim segment of no B-rep edge (a gap closure formats/brep added)
   std::vector<Eigen::Vector3d> points;  // in curve direction, ends included, origin face frame
   std::vector<Eigen::Vector2d> uvs;     // on the origin face
   std::vector<int> nodes;
@@ -319,22 +320,23 @@ class FaceMesher {
     std::vector<std::vector<Eigen::Vector2d>> polys;
     for (const auto& loop : f_.points) {
       std::vector<int> ids;
-      std::vector<Eigen::Vector2d> poly;
+      std::vector<Eigen::Vector2d> poly, given;
       for (size_t k = 0; k < loop.size(); ++k) {
         const LoopPoint& p = loop[k];
-        ids.push_back(add_vertex(p.uv, p.point, p.node));
-        poly.push_back(p.uv);
+        given.push_back(p.uv);
+        ids.push_back(add_vertex(inside_domain(p.uv), p.point, p.node));
+        poly.push_back(inside_domain(p.uv));
         if (!p.degenerate) continue;
         const Eigen::Vector2d next = loop[(k + 1) % loop.size()].uv;
         const int n = 1 + lines_between(us_, p.uv.x(), next.x()) + lines_between(vs_, p.uv.y(), next.y());
         for (int s = 1; s < n; ++s) {
-          const Eigen::Vector2d uv = segment_uv(*p.degenerate, p.t + (p.t_next - p.t) * s / n);
+          const Eigen::Vector2d uv = inside_domain(segment_uv(*p.degenerate, p.t + (p.t_next - p.t) * s / n));
           ids.push_back(add_vertex(uv, p.point, p.node));
           poly.push_back(uv);
         }
       }
       if (ids.size() < 3) throw GeometryError(f_.name, "a trimming loop has fewer than 3 distinct points");
-      check_loop(poly, polys.size());
+      check_loop(given, polys.size());
       dt_->insert_loop(ids);
       sync_vertices();
       polys.push_back(std::move(poly));
@@ -374,8 +376,9 @@ class FaceMesher {
     }
   }
 
-  // Refuses loops that bound nothing or leave the surface's domain by more than 1e-3 of it (files put
-  // pcurves a little outside by round-off; the surface is clamped there).
+  // Refuses loops that bound nothing or leave the surface's domain by more than 1e-2 of it. Files put
+  // pcurves a little outside (11752.stp: 1.5e-3 of a B-spline's domain); their points are moved onto
+  // the domain's edge (inside_domain), where the surface is clamped anyway.
   void check_loop(const std::vector<Eigen::Vector2d>& poly, size_t index) const {
     const double du = e_.u_end() - e_.u_start(), dv = e_.v_end() - e_.v_start();
     double area = 0;
@@ -383,13 +386,19 @@ class FaceMesher {
       const Eigen::Vector2d& a = poly[k];
       const Eigen::Vector2d& b = poly[(k + 1) % poly.size()];
       area += a.x() * b.y() - b.x() * a.y();
-      if (a.x() < e_.u_start() - 1e-3 * du || a.x() > e_.u_end() + 1e-3 * du || a.y() < e_.v_start() - 1e-3 * dv ||
-          a.y() > e_.v_end() + 1e-3 * dv)
+      if (a.x() < e_.u_start() - 1e-2 * du || a.x() > e_.u_end() + 1e-2 * du || a.y() < e_.v_start() - 1e-2 * dv ||
+          a.y() > e_.v_end() + 1e-2 * dv)
         throw GeometryError(f_.name, "trimming loop " + std::to_string(index) + " leaves the surface's domain at (" +
-                                         std::to_string(a.x()) + ", " + std::to_string(a.y()) + ")");
+                                         std::to_string(a.x()) + ", " + std::to_string(a.y()) + "), outside [" +
+                                         std::to_string(e_.u_start()) + ", " + std::to_string(e_.u_end()) + "] x [" +
+                                         std::to_string(e_.v_start()) + ", " + std::to_string(e_.v_end()) + "]");
     }
     if (std::abs(0.5 * area) <= 1e-12 * du * dv)
       throw GeometryError(f_.name, "trimming loop " + std::to_string(index) + " bounds no area");
+  }
+
+  Eigen::Vector2d inside_domain(const Eigen::Vector2d& uv) const {
+    return {std::clamp(uv.x(), e_.u_start(), e_.u_end()), std::clamp(uv.y(), e_.v_start(), e_.v_end())};
   }
 
   static int lines_between(const std::vector<double>& g, double a, double b) {
@@ -734,6 +743,7 @@ class Tessellator {
           const TrimEdgeRef ref = loop.edges.empty() ? TrimEdgeRef{} : loop.edges[k];
           if (ref.edge < 0) {
             ids.push_back(new_curve());
+            curves_.back().unnamed = true;
           } else {
             auto [it, fresh] = curve_of_edge_.emplace(std::pair{placement_of(f.world), ref.edge}, 0);
             if (fresh) it->second = new_curve();
@@ -766,7 +776,9 @@ class Tessellator {
     for (auto& c : curves_) {
       if (c.uses.empty()) continue;
       const CurveUse& u = c.uses.front();
-      c.degenerate = is_degenerate_segment(*faces_[u.face].eval, segment(u), 1e-3 * d_);
+      // A gap closure shorter than D/2 is one vertex: sampled on its own it would leave a crack
+      // beside the neighbouring face (Ventilator.stp).
+      c.degenerate = is_degenerate_segment(*faces_[u.face].eval, segment(u), (c.unnamed ? 0.5 : 1e-3) * d_);
     }
   }
 
@@ -985,13 +997,10 @@ class Tessellator {
           const Chord& p = chords[bucket[x]];
           const Chord& q = chords[bucket[y]];
           if (p.a == q.a || p.a == q.b || p.b == q.a || p.b == q.b) continue;  // neighbours
-          if (side(p.a, p.b, q.a) * side(p.a, p.b, q.b) > 0 || side(q.a, q.b, p.a) * side(q.a, q.b, p.b) > 0) continue;
-          if (side(p.a, p.b, q.a) == 0 && side(p.a, p.b, q.b) == 0) {
-            // Collinear: crossing only when they overlap.
-            const Eigen::Vector2d d = p.b - p.a;
-            const double s0 = (q.a - p.a).dot(d), s1 = (q.b - p.a).dot(d);
-            if (std::max(s0, s1) <= 0 || std::min(s0, s1) >= d.squaredNorm()) continue;
-          }
+          // Proper crossings only: chords that touch or overlap follow loops that touch or overlap
+          // themselves in the file (Ventilator.stp), which no split can undo; CGAL joins those
+          // constraints without new vertices.
+          if (side(p.a, p.b, q.a) * side(p.a, p.b, q.b) >= 0 || side(q.a, q.b, p.a) * side(q.a, q.b, p.b) >= 0) continue;
           if (p.curve >= 0) out.emplace(p.curve, p.span);
           if (q.curve >= 0) out.emplace(q.curve, q.span);
         }

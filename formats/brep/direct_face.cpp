@@ -3,6 +3,7 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <Bnd_Box2d.hxx>
 #include <Geom2d_BezierCurve.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
@@ -21,6 +22,7 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt2d.hxx>
 #include <Precision.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <algorithm>
 #include <cmath>
@@ -143,6 +145,25 @@ Handle(Geom2d_BSplineCurve) segment(const gp_Pnt2d& from, const gp_Pnt2d& to, do
   return new Geom2d_BSplineCurve(poles, knots, multiplicities, 1);
 }
 
+// The (u,v) box of the face's pcurves, from samples. BRepTools::UVBounds and ShapeAnalysis give a box
+// that may sit off the face's own seam by a few hundredths on full cylinders (11752.stp), which leaves
+// a sliver of the face outside one period.
+void face_uv_bounds(const TopoDS_Face& face, double& u0, double& u1, double& v0, double& v1) {
+  Bnd_Box2d box;
+  for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next()) {
+    Standard_Real first, last;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(ex.Current()), face, first, last);
+    if (pcurve.IsNull()) continue;
+    for (int i = 0; i <= 64; ++i) box.Add(pcurve->Value(first + (last - first) * i / 64));
+  }
+  if (box.IsVoid()) {
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    return;
+  }
+  box.SetGap(0);
+  box.Get(u0, v0, u1, v1);
+}
+
 }  // namespace
 
 std::optional<BSplineFace> direct_face(const TopoDS_Face& face, EdgeNumbering& edges) {
@@ -169,7 +190,7 @@ std::optional<BSplineFace> direct_face(const TopoDS_Face& face, EdgeNumbering& e
 
   // The face's range, within the surface's bounds and at most one period, as NurbsConvert takes it.
   Standard_Real u0, u1, v0, v1, su0, su1, sv0, sv1;
-  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  face_uv_bounds(face, u0, u1, v0, v1);
   basis->Bounds(su0, su1, sv0, sv1);
   if (!basis->IsUPeriodic()) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
   else if (u1 - u0 > basis->UPeriod()) u1 = u0 + basis->UPeriod();

@@ -62,12 +62,53 @@ void shift_pcurves(std::vector<WireUses>& wires, int direction, double amount) {
     for (auto& use : wire) use.curve->Translate(shift);
 }
 
+// A closed, non-periodic surface (NurbsConvert of a full cylinder) whose pcurves run past one of its
+// ends by less than a period (its seam is not the face's): the surface restarts where the pcurves
+// start (a knot of full multiplicity there made the periodic origin), and the pcurves move by whole
+// periods into it.
+void rebase_closed(Handle(Geom_BSplineSurface)& surface, std::vector<WireUses>& wires, int direction) {
+  if (wires.empty() || !(direction == 0 ? surface->IsUClosed() : surface->IsVClosed())) return;
+  Standard_Real u0, u1, v0, v1;
+  surface->Bounds(u0, u1, v0, v1);
+  const double a = direction == 0 ? u0 : v0, b = direction == 0 ? u1 : v1, period = b - a, tol = 1e-9 * period;
+  const auto [lo, hi] = pcurve_range(wires, direction);
+  if ((lo >= a - tol && hi <= b + tol) || hi - lo > period + tol) return;
+  const double start = lo + std::floor((lo - a) / period) * -period;  // lo moved into [a, b)
+  Handle(Geom_BSplineSurface) copy = Handle(Geom_BSplineSurface)::DownCast(surface->Copy());
+  try {
+    if (direction == 0) {
+      copy->SetUPeriodic();
+      copy->InsertUKnot(start, copy->UDegree(), tol);
+      for (int i = 1; i <= copy->NbUKnots(); ++i)
+        if (std::abs(copy->UKnot(i) - start) <= tol) copy->SetUOrigin(i);
+      copy->SetUNotPeriodic();
+    } else {
+      copy->SetVPeriodic();
+      copy->InsertVKnot(start, copy->VDegree(), tol);
+      for (int i = 1; i <= copy->NbVKnots(); ++i)
+        if (std::abs(copy->VKnot(i) - start) <= tol) copy->SetVOrigin(i);
+      copy->SetVNotPeriodic();
+    }
+  } catch (const Standard_Failure&) {
+    return;  // left as it is: the tessellator reports the loop outside the domain
+  }
+  copy->Bounds(u0, u1, v0, v1);
+  const double c = direction == 0 ? u0 : v0, d = direction == 0 ? u1 : v1;
+  const double shift = std::round((c - lo) / period) * period;
+  if (std::abs(lo + shift - c) > 1e-6 * period || hi + shift > d + 1e-6 * period) return;
+  surface = copy;
+  if (shift != 0) shift_pcurves(wires, direction, shift);
+}
+
 // Makes the surface non-periodic while keeping every pcurve inside its domain: the pcurves move by whole
 // periods when that fits them in, otherwise the surface is re-based to start where the face starts.
 void unperiodize(Handle(Geom_BSplineSurface)& surface, std::vector<WireUses>& wires) {
   for (int direction = 0; direction < 2; ++direction) {
     const bool periodic = direction == 0 ? surface->IsUPeriodic() : surface->IsVPeriodic();
-    if (!periodic) continue;
+    if (!periodic) {
+      rebase_closed(surface, wires, direction);
+      continue;
+    }
     Standard_Real u0, u1, v0, v1;
     surface->Bounds(u0, u1, v0, v1);
     const double a = direction == 0 ? u0 : v0, b = direction == 0 ? u1 : v1;
