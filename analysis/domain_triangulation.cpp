@@ -52,9 +52,13 @@ DomainTriangulation::DomainTriangulation(double scale_u, double scale_v) : impl_
 
 DomainTriangulation::~DomainTriangulation() = default;
 
-int DomainTriangulation::insert(const Eigen::Vector2d& uv) {
+int DomainTriangulation::insert(const Eigen::Vector2d& uv, int near) {
   const auto before = impl_->cdt.number_of_vertices();
-  auto v = impl_->cdt.insert(Kernel::Point_2(uv.x() * impl_->su, uv.y() * impl_->sv));
+  // Points come in runs (loops, grid rows) or inside a known triangle (refinement): locating from a
+  // nearby vertex walks a few triangles instead of across the whole domain.
+  const auto& handles = impl_->handles;
+  const Cdt::Face_handle hint = near >= 0 ? handles[near]->face() : handles.empty() ? Cdt::Face_handle() : handles.back()->face();
+  auto v = impl_->cdt.insert(Kernel::Point_2(uv.x() * impl_->su, uv.y() * impl_->sv), hint);
   if (impl_->cdt.number_of_vertices() == before) return v->info().value;
   return impl_->add(v, uv);
 }

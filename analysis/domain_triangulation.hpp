@@ -18,7 +18,8 @@ class DomainTriangulation {
   DomainTriangulation& operator=(const DomainTriangulation&) = delete;
 
   // Inserts a point; returns its vertex id (the existing id when the point is already a vertex).
-  int insert(const Eigen::Vector2d& uv);
+  // `near` (a vertex id, or -1 for the last inserted vertex) is where the point location starts.
+  int insert(const Eigen::Vector2d& uv, int near = -1);
 
   // Constrains the closed polygon through the given vertex ids (consecutive equal ids are skipped).
   // Where it crosses earlier constraints CGAL adds vertices; they get ids too (see uv()).

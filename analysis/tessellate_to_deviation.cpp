@@ -532,10 +532,13 @@ class FaceMesher {
   }
 
   void refine() {
-    for (int round = 0; round < 200; ++round) {
+    // A budget, so that a triangle no refinement can certify (a loose bound at a pole) cannot make the
+    // face grow without end: what is left above D then is reported as uncertified.
+    const int budget = 64 * dt_->vertex_count() + 20000;
+    for (int round = 0; round < 200 && dt_->vertex_count() < budget; ++round) {
       triangles_ = dt_->inside_triangles();
       const int before = dt_->vertex_count();
-      std::vector<Eigen::Vector2d> inserts;
+      std::vector<std::pair<Eigen::Vector2d, int>> inserts;  // point, a vertex of its triangle
       std::vector<std::pair<int, int>> splits;  // degenerate boundary edges to split
       std::unordered_set<std::uint64_t> edges_done;
       for (const auto& t : triangles_) {
@@ -552,14 +555,14 @@ class FaceMesher {
           continue;
         }
         if (v.crosses_c0) {
-          inserts.push_back(v.c0_point);
+          inserts.emplace_back(v.c0_point, t[0]);
           continue;
         }
         if (v.edge >= 0) {
           const int p = t[v.edge], q = t[(v.edge + 1) % 3];
           const std::uint64_t eh = (static_cast<std::uint64_t>(std::min(p, q)) << 32) | static_cast<std::uint32_t>(std::max(p, q));
           if (!dt_->is_constrained(p, q)) {
-            if (edges_done.insert(eh).second) inserts.push_back(0.5 * (vertices_[p].uv + vertices_[q].uv));
+            if (edges_done.insert(eh).second) inserts.emplace_back(0.5 * (vertices_[p].uv + vertices_[q].uv), p);
             continue;
           }
           if (vertices_[p].node >= 0 && vertices_[p].node == vertices_[q].node) {
@@ -571,10 +574,10 @@ class FaceMesher {
             give_up(h, v);
             continue;
           }
-          inserts.push_back((vertices_[t[0]].uv + vertices_[t[1]].uv + vertices_[t[2]].uv) / 3.0);
+          inserts.emplace_back((vertices_[t[0]].uv + vertices_[t[1]].uv + vertices_[t[2]].uv) / 3.0, t[0]);
           continue;
         }
-        inserts.push_back(v.peak);
+        inserts.emplace_back(v.peak, t[0]);
       }
       for (const auto& [p, q] : splits) {
         const Vertex pole = vertices_[p];
@@ -582,8 +585,8 @@ class FaceMesher {
         sync_vertices();
         if (vertices_[m].node == -2) set_vertex(m, dt_->uv(m), pole.point, pole.node);
       }
-      for (const auto& uv : inserts) {
-        const int id = dt_->insert(uv);
+      for (const auto& [uv, near] : inserts) {
+        const int id = dt_->insert(uv, near);
         sync_vertices();
         if (vertices_[id].node == -2) set_vertex(id, uv, e_.point(uv.x(), uv.y()), -1);
       }
@@ -936,11 +939,20 @@ class Tessellator {
       const CurveProjection on_curve = project_to_trim_curve(e, s, p, std::max(t_prev, t_at(fraction)), t_prev, t1);
       if (on_curve.distance > d_) return false;
       Eigen::Vector2d uv = on_curve.uv;
+      // Two faces' pcurves of one edge may disagree (file tolerances): a shared point may then land
+      // on this segment's end, or on its previous point. The uv must still advance, or the mesh
+      // merges two model points into one vertex and leaves a T-junction beside the other face.
+      double t = on_curve.t;
+      if (!(t > t_prev) || !(t < t1)) {
+        t = t_prev + 0.5 * (t1 - t_prev);
+        uv = segment_uv(s, t);
+      }
       // Polish on the surface: the vertex then sits where this surface is nearest to the shared point.
       const SurfaceProjection on_surface = project_to_surface(e, p, uv, 8);
       const double step = (uv - mine.back().uv).norm();
-      if (on_surface.distance < on_curve.distance && (on_surface.uv - uv).norm() < 0.01 * step) uv = on_surface.uv;
-      t_prev = on_curve.t;
+      if (t == on_curve.t && on_surface.distance < on_curve.distance && (on_surface.uv - uv).norm() < 0.01 * step)
+        uv = on_surface.uv;
+      t_prev = t;
       mine.push_back({uv, p, curve.nodes[i]});
       mine.back().curve = curve_index;
       mine.back().span = static_cast<int>(use.reversed ? i - 1 : i);
