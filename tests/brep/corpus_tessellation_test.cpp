@@ -114,9 +114,9 @@ TEST_P(TessellationCorpus, WithinDeviationCloseToOcctAndWatertight) {
   EXPECT_LE(deviation.overall.max, d) << "our tessellation vs our exact NURBS";
   EXPECT_LE(between.overall.max, 2 * d) << "our tessellation vs OCCT's BRepMesh";
   // Known open: Ventilator.stp leaves 54 boundary edges on three face pairs (236/242, 296/301,
-  // 241/300) where one face's loop closes a gap of about D/2 on its own (a segment of no B-rep edge,
-  // added by formats/brep) beside a sampled edge of the other face: an open defect, held here so
-  // that it cannot grow unnoticed.
+  // 241/300), where uses of a shared edge did not match its samples on the other face within D (the
+  // file's pcurves of that edge disagree) and were sampled on their own: an open defect, held here
+  // so that it cannot grow unnoticed.
   const long known_open = relative == "step/Ventilator.stp" ? 54 : 0;
   EXPECT_LE(water.boundary, known_open) << "boundary edges over " << water.closed_solids << " closed solids";
   EXPECT_EQ(water.non_manifold, 0) << "non-manifold edges over " << water.closed_solids << " closed solids";
