@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <unordered_map>
 #include <unordered_set>
@@ -543,13 +544,9 @@ class FaceMesher {
       std::unordered_set<std::uint64_t> edges_done;
       for (const auto& t : triangles_) {
         const std::uint64_t h = key(t);
-        if (certified_.count(h)) continue;
-        const Verdict v = certify(t);
-        if (v.ok) {
-          certified_.insert(h);
-          report_.certified_deviation = std::max(report_.certified_deviation, v.bound);
-          continue;
-        }
+        const std::optional<Verdict> failed = certify_once(t, h);
+        if (!failed) continue;
+        const Verdict& v = *failed;
         if (too_small(t)) {
           give_up(h, v);
           continue;
@@ -598,15 +595,18 @@ class FaceMesher {
     triangles_ = dt_->inside_triangles();
     for (const auto& t : triangles_) {
       const std::uint64_t h = key(t);
-      if (certified_.count(h)) continue;
-      const Verdict v = certify(t);
-      if (v.ok) {
-        certified_.insert(h);
-        report_.certified_deviation = std::max(report_.certified_deviation, v.bound);
-      } else {
-        give_up(h, v);
-      }
+      if (const std::optional<Verdict> failed = certify_once(t, h)) give_up(h, *failed);
     }
+  }
+
+  // Certifies triangle t (hash h) unless it was already settled; the verdict when it fails.
+  std::optional<Verdict> certify_once(const std::array<int, 3>& t, std::uint64_t h) {
+    if (certified_.count(h)) return std::nullopt;
+    const Verdict v = certify(t);
+    if (!v.ok) return v;
+    certified_.insert(h);
+    report_.certified_deviation = std::max(report_.certified_deviation, v.bound);
+    return std::nullopt;
   }
 
   bool too_small(const std::array<int, 3>& t) const {
@@ -976,7 +976,9 @@ class Tessellator {
         const LoopPoint& p = loop[k];
         const Eigen::Vector2d& q = loop[(k + 1) % loop.size()].uv;
         box.extend(p.uv);
-        if (std::none_of(distinct.begin(), distinct.end(), [&](const Eigen::Vector2d& x) { return x == p.uv; }))
+        // Three distinct points are enough to know: no quadratic search on long loops.
+        if (distinct.size() < 3 &&
+            std::none_of(distinct.begin(), distinct.end(), [&](const Eigen::Vector2d& x) { return x == p.uv; }))
           distinct.push_back(p.uv);
         if (p.uv != q) chords.push_back({p.uv, q, p.curve, p.span});
       }

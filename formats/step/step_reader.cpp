@@ -23,6 +23,7 @@
 #include "formats/brep/file_probe.hpp"
 #include "formats/brep/occt_errors.hpp"
 #include "formats/brep/occt_setup.hpp"
+#include "formats/brep/reader_plumbing.hpp"
 #include "formats/brep/xcaf_to_scene.hpp"
 #include "formats/common/file_io.hpp"
 
@@ -63,7 +64,6 @@ void read_model(STEPControl_Reader& reader, const std::string& path) {
   refuse_unresolved_references(reader.WS()->ModelCheckList(), model, path, "STEP");
 }
 
-bool has_faces(const TopoDS_Shape& shape) { return !shape.IsNull() && TopExp_Explorer(shape, TopAbs_FACE).More(); }
 
 // Through XCAF (names, colours, assemblies). Empty optional when XCAF gave no shape.
 std::optional<BrepTranslation> read_with_xcaf(const std::string& path, const std::string& stem) {
@@ -105,16 +105,7 @@ BrepTranslation read_plain(const std::string& path, const std::string& stem) {
   STEPControl_Reader reader;
   Interface_Static::SetCVal("xstep.cascade.unit", "MM");
   read_model(reader, path);
-  const int roots = reader.NbRootsForTransfer();
-  if (roots == 0) throw FileError(path + ": no shape in the file (no transferable roots)");
-  const int transferred = reader.TransferRoots();
-  const TopoDS_Shape shape = reader.OneShape();
-  if (transferred == 0 || shape.IsNull())
-    throw FileError(path + ": no shape in the file (" + std::to_string(transferred) + " of " + std::to_string(roots) +
-                    " roots transferred)");
-  if (!has_faces(shape))
-    throw FileError(path + ": no faces in the file (" + std::to_string(transferred) + " of " + std::to_string(roots) +
-                    " roots transferred, none with faces)");
+  const TopoDS_Shape shape = transfer_roots(reader, path);
   BrepTranslation out = shape_to_scene(shape, stem);
   out.scene.source_unit = file_unit(reader);
   return out;
@@ -126,20 +117,8 @@ BrepTranslation read_step(const std::string& path) {
   prepare_occt();
   check_framing(path);
   const std::string stem = std::filesystem::path(path).stem().string();
-  std::string xcaf_failure;
-  try {
-    OCC_CATCH_SIGNALS
-    if (auto translation = read_with_xcaf(path, stem)) return std::move(*translation);
-  } catch (const Standard_Failure& failure) {
-    // Damaged style or name entities can crash the XCAF transfer; the geometry may still read.
-    xcaf_failure = occt_failure_text(failure);
-  }
-  try {
-    OCC_CATCH_SIGNALS
-    return read_plain(path, stem);
-  } catch (const Standard_Failure& failure) {
-    throw FileError(path + ": STEP read failed: " + (xcaf_failure.empty() ? occt_failure_text(failure) : xcaf_failure));
-  }
+  return read_xcaf_or_plain(
+      path, "STEP", [&] { return read_with_xcaf(path, stem); }, [&] { return read_plain(path, stem); });
 }
 
 }  // namespace cadnurbs
