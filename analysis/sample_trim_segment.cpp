@@ -63,30 +63,39 @@ bool is_degenerate_segment(const SurfaceEvaluator& surface, const TrimSegment& s
 
 namespace {
 
+constexpr int kChordSamples = 8;
+
 // Whether chord (a, b) is fine; see the header for the two criteria.
 bool chord_ok(const SurfaceEvaluator& surface, const SurfaceDeviationBound& bound, const TrimSegment& segment,
               const TrimSample& a, const TrimSample& b, double d) {
-  constexpr int m = 8;
-  double parametric = 0;
-  for (int j = 1; j < m; ++j) {
-    const double s = static_cast<double>(j) / m;
-    const Eigen::Vector2d uv = segment_uv(segment, a.t + (b.t - a.t) * s);
+  for (int j = 1; j < kChordSamples; ++j) {
+    const Eigen::Vector2d uv = segment_uv(segment, a.t + (b.t - a.t) * j / kChordSamples);
     if (point_segment_distance(surface.point(uv.x(), uv.y()), a.point, b.point) > 0.9 * d) return false;
-    const Eigen::Vector2d chord_uv = (1 - s) * a.uv + s * b.uv;
-    parametric = std::max(parametric, point_segment_distance(surface.point(chord_uv.x(), chord_uv.y()), a.point, b.point));
-    if (parametric > d) return false;
   }
-  // Remainder between the samples of the (u,v) chord: 1D FMM bound on pieces of length h/m.
-  const Eigen::Vector2d duv = b.uv - a.uv;
-  const auto m2 = bound.over(std::min(a.uv.x(), b.uv.x()), std::max(a.uv.x(), b.uv.x()), std::min(a.uv.y(), b.uv.y()),
-                             std::max(a.uv.y(), b.uv.y()));
-  const double q = m2.uu * duv.x() * duv.x() + 2 * m2.uv * std::abs(duv.x() * duv.y()) + m2.vv * duv.y() * duv.y();
-  // A chord that crosses a C0 knot line has no such bound: the samples are all we have there, and
-  // the 3D criterion above keeps such chords short.
-  return parametric + q / (8.0 * m * m) <= d;
+  return surface_chord_within(surface, bound, a.uv, a.point, b.uv, b.point, d);
 }
 
 }  // namespace
+
+bool surface_chord_within(const SurfaceEvaluator& surface, const SurfaceDeviationBound& bound, const Eigen::Vector2d& a_uv,
+                          const Eigen::Vector3d& a, const Eigen::Vector2d& b_uv, const Eigen::Vector3d& b, double d) {
+  constexpr int m = kChordSamples;
+  double parametric = 0;
+  for (int j = 1; j < m; ++j) {
+    const double s = static_cast<double>(j) / m;
+    const Eigen::Vector2d chord_uv = (1 - s) * a_uv + s * b_uv;
+    parametric = std::max(parametric, point_segment_distance(surface.point(chord_uv.x(), chord_uv.y()), a, b));
+    if (parametric > d) return false;
+  }
+  // Remainder between the samples of the (u,v) chord: 1D FMM bound on pieces of length h/m.
+  const Eigen::Vector2d duv = b_uv - a_uv;
+  const auto m2 = bound.over(std::min(a_uv.x(), b_uv.x()), std::max(a_uv.x(), b_uv.x()), std::min(a_uv.y(), b_uv.y()),
+                             std::max(a_uv.y(), b_uv.y()));
+  const double q = m2.uu * duv.x() * duv.x() + 2 * m2.uv * std::abs(duv.x() * duv.y()) + m2.vv * duv.y() * duv.y();
+  // A chord that crosses a C0 knot line has no such bound: the samples are all we have there, and
+  // the 3D criterion of the loop sampling keeps such chords short.
+  return parametric + q / (8.0 * m * m) <= d;
+}
 
 std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, const SurfaceDeviationBound& bound,
                                             const TrimSegment& segment, double max_deviation,

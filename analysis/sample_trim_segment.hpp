@@ -38,6 +38,10 @@ struct TrimSample {
 // True when S(c(t)) moves less than `tolerance` over the whole segment (a pole or a collapsed edge).
 bool is_degenerate_segment(const SurfaceEvaluator& surface, const TrimSegment& segment, double tolerance);
 
+// Criterion (2) alone, for the straight (u,v) chord from a_uv to b_uv whose 3D ends are a and b.
+bool surface_chord_within(const SurfaceEvaluator& surface, const SurfaceDeviationBound& bound, const Eigen::Vector2d& a_uv,
+                          const Eigen::Vector3d& a, const Eigen::Vector2d& b_uv, const Eigen::Vector3d& b, double d);
+
 // Samples of the segment from its start to its end, first and last given as `start_point` and
 // `end_point` (shared model vertices: used as they are, bit for bit). With a tessellation grid
 // (grid_u, grid_v: sorted parameter lines), no chord crosses more than one line of it in u or in v,

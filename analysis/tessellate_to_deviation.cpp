@@ -671,13 +671,15 @@ class Tessellator {
       const CurveUse& first = curves_[c].uses.front();
       guarded(faces_[first.face], [&] { sample_curve(static_cast<int>(c)); });
     }
-    // Coarse chords of nearby loops (a small hole near an outer boundary) may cross in (u,v), and a
-    // small closed edge may come out as fewer than 3 points: split those chords on their curves, on
-    // every face that uses them, until each face's loops are simple.
+    // Coarse chords of nearby loops (a small hole near an outer boundary) may cross in (u,v), a
+    // small closed edge may come out as fewer than 3 points, and a chord fine on the curve's first
+    // face may be too coarse on another: split those chords on their curves, on every face that uses
+    // them, until each face's loops are simple and each chord is fine on each face.
     for (int round = 0;; ++round) {
       for (size_t fi = 0; fi < faces_.size(); ++fi) guarded(faces_[fi], [&] { collect_loop_points(static_cast<int>(fi)); });
       std::set<std::pair<int, int>> splits;
       for (const auto& f : faces_) chords_to_split(f, splits);
+      for (const auto& f : faces_) chords_too_coarse(f, splits);
       if (splits.empty() || round == 12) break;
       for (auto it = splits.rbegin(); it != splits.rend(); ++it) split_span(it->first, it->second);
     }
@@ -1018,6 +1020,26 @@ class Tessellator {
           if (p.curve >= 0) out.emplace(p.curve, p.span);
           if (q.curve >= 0) out.emplace(q.curve, q.span);
         }
+  }
+
+  // Splittable chords of face f that its surface does not follow within D (criterion (2) of
+  // sample_trim_segment, between this face's own points at the chord's ends), or that cross more
+  // than one line of its grid. A curve is sampled on its first face; on the others, triangles along
+  // such a chord could never be certified, and refining towards it only makes slivers.
+  void chords_too_coarse(const Face& f, std::set<std::pair<int, int>>& out) const {
+    auto crossings = [](const std::vector<double>& g, double a, double b) {
+      return std::lower_bound(g.begin(), g.end(), std::max(a, b)) - std::upper_bound(g.begin(), g.end(), std::min(a, b));
+    };
+    for (const auto& loop : f.points)
+      for (size_t k = 0; k < loop.size(); ++k) {
+        const LoopPoint& p = loop[k];
+        if (p.curve < 0) continue;
+        const Eigen::Vector2d& a = p.uv;
+        const Eigen::Vector2d& b = loop[(k + 1) % loop.size()].uv;
+        if (crossings(f.us, a.x(), b.x()) > 1 || crossings(f.vs, a.y(), b.y()) > 1 ||
+            !surface_chord_within(*f.eval, f.bound, a, f.eval->point(a.x(), a.y()), b, f.eval->point(b.x(), b.y()), d_))
+          out.emplace(p.curve, p.span);
+      }
   }
 
   // A new sample in the middle (in the origin segment's parameter) of span `span` of curve c.

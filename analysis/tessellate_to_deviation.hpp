@@ -12,7 +12,10 @@
 //     shared by several faces (TrimEdgeRef) are sampled once, on their first face; the other faces
 //     find the (u,v) of the same 3D points by point inversion (Newton on the curve on their surface
 //     from the arc-length-proportional parameter, then on the surface) and use those 3D points as
-//     they are, so that shared edges carry bit-identical vertices.
+//     they are, so that shared edges carry bit-identical vertices. Each chord must then also pass
+//     sample_trim_segment's surface criterion and grid rule on every face that uses it; where it
+//     does not, the span is split on the curve (for all its faces), so boundary triangles can be
+//     certified on every side.
 //  3. Grid points inside the loops (even-odd) and not too close to them, plus the loop points, go
 //     into a constrained Delaunay triangulation of the domain (CGAL), scaled so grid cells are square.
 //  4. Every triangle is certified. Its deviation (distance of the surface over its (u,v) triangle

@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
   for (double d : {1.0, 0.1, 0.01}) models.push_back(capping_model("capping-90", d));
   models.push_back(capping_model("capping-post", 0.1));
   for (const char* file : {"io1-cm-214.stp", "io1-tu-203.stp", "as1-oc-214.stp", "dm1-id-214.stp", "screw.step",
-                           "linkrods.step", "featuretype.STEP"}) {
+                           "linkrods.step", "featuretype.STEP", "Ventilator.stp"}) {
     try {
       models.push_back(step_model(file, 0.001));
     } catch (const std::exception& e) {

@@ -113,22 +113,17 @@ TEST_P(TessellationCorpus, WithinDeviationCloseToOcctAndWatertight) {
 
   EXPECT_LE(deviation.overall.max, d) << "our tessellation vs our exact NURBS";
   EXPECT_LE(between.overall.max, 2 * d) << "our tessellation vs OCCT's BRepMesh";
-  // Known open: Ventilator.stp leaves 54 boundary edges on three face pairs (236/242, 296/301,
-  // 241/300), where uses of a shared edge did not match its samples on the other face within D (the
-  // file's pcurves of that edge disagree) and were sampled on their own: an open defect, held here
-  // so that it cannot grow unnoticed.
-  const long known_open = relative == "step/Ventilator.stp" ? 54 : 0;
-  EXPECT_LE(water.boundary, known_open) << "boundary edges over " << water.closed_solids << " closed solids";
+  EXPECT_EQ(water.boundary, 0) << "boundary edges over " << water.closed_solids << " closed solids";
   EXPECT_EQ(water.non_manifold, 0) << "non-manifold edges over " << water.closed_solids << " closed solids";
   if (reference.faces_all_in_solids) {
     EXPECT_GT(water.closed_solids, 0) << "OCCT sees solids; we found none closed";
   }
-  // Triangles left above the certified bound are reported (the table's column), not asserted: the
-  // rigorous bound of a rational surface is loose on slivers along seams (as1-tu-203: 9 triangles),
-  // while the measured deviation above stays within D.
-  // Ventilator.stp: 8 uses of shared edges whose pcurves on the two faces disagree by more than D
-  // are sampled on their own (their cracks are among the boundary edges counted above).
-  EXPECT_LE(report.unshared_edge_uses, relative == "step/Ventilator.stp" ? 8 : 0);
+  // Every triangle certified within D by the rigorous bound, not only measured within it. (Chords of a
+  // shared edge used to be checked on the edge's first face only; as1-tu-203 then left 9 slivers.)
+  EXPECT_EQ(report.uncertified_triangles, 0);
+  // Every use of a shared edge must find the edge's samples on its own pcurve within D: a miss
+  // means the faces' conversions disagree (Ventilator.stp's half cylinders did, by 1.6 mm).
+  EXPECT_EQ(report.unshared_edge_uses, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, TessellationCorpus, ::testing::ValuesIn(corpus_paths({"step/", "iges/"})),
