@@ -11,61 +11,6 @@ namespace {
 
 constexpr int kMax = SurfaceEvaluator::max_order;
 
-// ders[k][j]: k-th derivative (k <= nd) of the j-th non-zero basis function (The NURBS Book A2.3),
-// on fixed-size stack arrays.
-void basis(const std::vector<double>& knots, int order, int span, double t, int nd, double ders[3][kMax]) {
-  const int p = order - 1;
-  double ndu[kMax][kMax];
-  double left[kMax], right[kMax];
-  ndu[0][0] = 1.0;
-  for (int j = 1; j <= p; ++j) {
-    left[j] = t - knots[span + 1 - j];
-    right[j] = knots[span + j] - t;
-    double saved = 0.0;
-    for (int r = 0; r < j; ++r) {
-      ndu[j][r] = right[r + 1] + left[j - r];
-      const double temp = ndu[r][j - 1] / ndu[j][r];
-      ndu[r][j] = saved + right[r + 1] * temp;
-      saved = left[j - r] * temp;
-    }
-    ndu[j][j] = saved;
-  }
-  for (int j = 0; j <= p; ++j) ders[0][j] = ndu[j][p];
-  for (int k = 1; k <= nd; ++k)
-    for (int j = 0; j <= p; ++j) ders[k][j] = 0.0;
-  if (nd == 0) return;
-  double a[2][kMax];
-  for (int r = 0; r <= p; ++r) {
-    int s1 = 0, s2 = 1;
-    a[0][0] = 1.0;
-    for (int k = 1; k <= std::min(nd, p); ++k) {
-      double d = 0.0;
-      const int rk = r - k, pk = p - k;
-      if (r >= k) {
-        a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
-        d = a[s2][0] * ndu[rk][pk];
-      }
-      const int j1 = rk >= -1 ? 1 : -rk;
-      const int j2 = (r - 1 <= pk) ? k - 1 : p - r;
-      for (int j = j1; j <= j2; ++j) {
-        a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
-        d += a[s2][j] * ndu[rk + j][pk];
-      }
-      if (r <= pk) {
-        a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
-        d += a[s2][k] * ndu[r][pk];
-      }
-      ders[k][r] = d;
-      std::swap(s1, s2);
-    }
-  }
-  double factor = p;
-  for (int k = 1; k <= std::min(nd, p); ++k) {
-    for (int j = 0; j <= p; ++j) ders[k][j] *= factor;
-    factor *= (p - k);
-  }
-}
-
 }  // namespace
 
 SurfaceEvaluator::SurfaceEvaluator(const NurbsSurface& s)
@@ -95,8 +40,8 @@ SurfaceJet SurfaceEvaluator::jet(double u, double v, int order) const {
   const int us = find_knot_span(u_knots_, u_order_, u_count_, u);
   const int vs = find_knot_span(v_knots_, v_order_, v_count_, v);
   double nu[3][kMax], nv[3][kMax];
-  basis(u_knots_, u_order_, us, u, order, nu);
-  basis(v_knots_, v_order_, vs, v, order, nv);
+  basis_function_derivatives(u_knots_, u_order_, us, u, order, &nu[0][0], kMax);
+  basis_function_derivatives(v_knots_, v_order_, vs, v, order, &nv[0][0], kMax);
   // Homogeneous derivatives h[k][l] = d^{k+l}(wP, w)/du^k dv^l, k + l <= order.
   Eigen::Vector4d h[3][3];
   for (auto& row : h)

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "core/knot_vector.hpp"
 #include "core/nurbs_surface.hpp"
 
 namespace cadnurbs {
@@ -18,7 +19,7 @@ struct SurfaceJet {
 class SurfaceEvaluator {
  public:
   // Highest order (degree + 1) supported; OCCT and IGES stop at degree 25.
-  static constexpr int max_order = 26;
+  static constexpr int max_order = kMaxStackOrder;
 
   // Takes a validated surface; refuses (GeometryError "surface evaluator") orders above max_order.
   explicit SurfaceEvaluator(const NurbsSurface& surface);

@@ -675,13 +675,23 @@ class Tessellator {
     // small closed edge may come out as fewer than 3 points, and a chord fine on the curve's first
     // face may be too coarse on another: split those chords on their curves, on every face that uses
     // them, until each face's loops are simple and each chord is fine on each face.
+    // Only faces that use a split curve change between rounds (`stale`): the others keep their
+    // points and have nothing to split.
+    std::vector<char> stale(faces_.size(), 1);
     for (int round = 0;; ++round) {
-      for (size_t fi = 0; fi < faces_.size(); ++fi) guarded(faces_[fi], [&] { collect_loop_points(static_cast<int>(fi)); });
       std::set<std::pair<int, int>> splits;
-      for (const auto& f : faces_) chords_to_split(f, splits);
-      for (const auto& f : faces_) chords_too_coarse(f, splits);
+      for (size_t fi = 0; fi < faces_.size(); ++fi) {
+        if (!stale[fi]) continue;
+        guarded(faces_[fi], [&] { collect_loop_points(static_cast<int>(fi)); });
+        chords_to_split(faces_[fi], splits);
+        chords_too_coarse(faces_[fi], splits);
+      }
       if (splits.empty() || round == 12) break;
-      for (auto it = splits.rbegin(); it != splits.rend(); ++it) split_span(it->first, it->second);
+      std::fill(stale.begin(), stale.end(), 0);
+      for (auto it = splits.rbegin(); it != splits.rend(); ++it) {
+        split_span(it->first, it->second);
+        for (const CurveUse& use : curves_[it->first].uses) stale[use.face] = 1;
+      }
     }
     for (auto& f : faces_) guarded(f, [&] { FaceMesher(f, d_, report_).run(); });
     report_.faces += static_cast<int>(faces_.size());

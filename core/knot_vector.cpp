@@ -68,28 +68,39 @@ int find_knot_span(const std::vector<double>& knots, int order, int count, doubl
   return static_cast<int>(it - knots.begin()) - 1;
 }
 
-std::vector<std::vector<double>> basis_function_derivatives(const std::vector<double>& knots, int order,
-                                                            int span, double t, int max_derivative) {
+void basis_function_derivatives(const std::vector<double>& knots, int order, int span, double t, int max_derivative,
+                                double* ders, int stride) {
   const int p = order - 1;
   const int nd = std::min(max_derivative, p);
-  std::vector<std::vector<double>> ndu(order, std::vector<double>(order, 0.0));
-  std::vector<double> left(order), right(order);
-  ndu[0][0] = 1.0;
+  // Scratch on the stack up to kMaxStackOrder; heap only for higher orders (rare, and still correct).
+  double ndu_stack[kMaxStackOrder * kMaxStackOrder], line_stack[4 * kMaxStackOrder];
+  std::vector<double> heap;
+  double* ndu = ndu_stack;
+  double* line = line_stack;
+  if (order > kMaxStackOrder) {
+    heap.resize(static_cast<size_t>(order) * order + 4 * static_cast<size_t>(order));
+    ndu = heap.data();
+    line = heap.data() + static_cast<size_t>(order) * order;
+  }
+  auto N = [&](int i, int j) -> double& { return ndu[i * order + j]; };
+  double* left = line;
+  double* right = line + order;
+  double* a[2] = {line + 2 * order, line + 3 * order};
+  N(0, 0) = 1.0;
   for (int j = 1; j <= p; ++j) {
     left[j] = t - knots[span + 1 - j];
     right[j] = knots[span + j] - t;
     double saved = 0.0;
     for (int r = 0; r < j; ++r) {
-      ndu[j][r] = right[r + 1] + left[j - r];
-      const double temp = ndu[r][j - 1] / ndu[j][r];
-      ndu[r][j] = saved + right[r + 1] * temp;
+      N(j, r) = right[r + 1] + left[j - r];
+      const double temp = N(r, j - 1) / N(j, r);
+      N(r, j) = saved + right[r + 1] * temp;
       saved = left[j - r] * temp;
     }
-    ndu[j][j] = saved;
+    N(j, j) = saved;
   }
-  std::vector<std::vector<double>> ders(max_derivative + 1, std::vector<double>(order, 0.0));
-  for (int j = 0; j <= p; ++j) ders[0][j] = ndu[j][p];
-  std::vector<std::vector<double>> a(2, std::vector<double>(order, 0.0));
+  for (int k = 0; k <= max_derivative; ++k)
+    for (int j = 0; j <= p; ++j) ders[k * stride + j] = k == 0 ? N(j, p) : 0.0;
   for (int r = 0; r <= p; ++r) {
     int s1 = 0, s2 = 1;
     a[0][0] = 1.0;
@@ -97,28 +108,36 @@ std::vector<std::vector<double>> basis_function_derivatives(const std::vector<do
       double d = 0.0;
       const int rk = r - k, pk = p - k;
       if (r >= k) {
-        a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
-        d = a[s2][0] * ndu[rk][pk];
+        a[s2][0] = a[s1][0] / N(pk + 1, rk);
+        d = a[s2][0] * N(rk, pk);
       }
       const int j1 = rk >= -1 ? 1 : -rk;
       const int j2 = (r - 1 <= pk) ? k - 1 : p - r;
       for (int j = j1; j <= j2; ++j) {
-        a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
-        d += a[s2][j] * ndu[rk + j][pk];
+        a[s2][j] = (a[s1][j] - a[s1][j - 1]) / N(pk + 1, rk + j);
+        d += a[s2][j] * N(rk + j, pk);
       }
       if (r <= pk) {
-        a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
-        d += a[s2][k] * ndu[r][pk];
+        a[s2][k] = -a[s1][k - 1] / N(pk + 1, r);
+        d += a[s2][k] * N(r, pk);
       }
-      ders[k][r] = d;
+      ders[k * stride + r] = d;
       std::swap(s1, s2);
     }
   }
-  int factor = p;
+  double factor = p;
   for (int k = 1; k <= nd; ++k) {
-    for (int j = 0; j <= p; ++j) ders[k][j] *= factor;
+    for (int j = 0; j <= p; ++j) ders[k * stride + j] *= factor;
     factor *= (p - k);
   }
+}
+
+std::vector<std::vector<double>> basis_function_derivatives(const std::vector<double>& knots, int order,
+                                                            int span, double t, int max_derivative) {
+  std::vector<double> flat(static_cast<size_t>(max_derivative + 1) * order);
+  basis_function_derivatives(knots, order, span, t, max_derivative, flat.data(), order);
+  std::vector<std::vector<double>> ders(max_derivative + 1);
+  for (int k = 0; k <= max_derivative; ++k) ders[k].assign(flat.begin() + k * order, flat.begin() + (k + 1) * order);
   return ders;
 }
 

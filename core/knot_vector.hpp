@@ -19,6 +19,12 @@ int find_knot_span(const std::vector<double>& knots, int order, int count, doubl
 std::vector<std::vector<double>> basis_function_derivatives(const std::vector<double>& knots, int order,
                                                             int span, double t, int max_derivative);
 
+// The same into caller storage, without allocating for orders up to kMaxStackOrder: ders[k * stride + j],
+// stride >= order. The kernel of the evaluators (curve_point, SurfaceEvaluator).
+constexpr int kMaxStackOrder = 26;
+void basis_function_derivatives(const std::vector<double>& knots, int order, int span, double t, int max_derivative,
+                                double* ders, int stride);
+
 // A clamped uniform knot vector on [0, 1] for `count` control points of `order`.
 std::vector<double> clamped_uniform_knots(int order, int count);
 

@@ -45,7 +45,21 @@ std::vector<Eigen::Vector3d> curve_derivatives(const NurbsCurve& curve, double t
   return rational_curve_derivatives(homogeneous);
 }
 
-Eigen::Vector3d curve_point(const NurbsCurve& curve, double t) { return curve_derivatives(curve, t, 0)[0]; }
+Eigen::Vector3d curve_point(const NurbsCurve& curve, double t) {
+  if (curve.order > kMaxStackOrder) return curve_derivatives(curve, t, 0)[0];
+  // The hot path of trim sampling and inversion: no allocation.
+  const int span = find_knot_span(curve.knots, curve.order, curve.count(), t);
+  double basis[kMaxStackOrder];
+  basis_function_derivatives(curve.knots, curve.order, span, t, 0, basis, kMaxStackOrder);
+  Eigen::Vector4d homogeneous = Eigen::Vector4d::Zero();
+  for (int j = 0; j < curve.order; ++j) {
+    const int i = span - curve.order + 1 + j;
+    const double w = curve.weight(i);
+    homogeneous.head<3>() += basis[j] * w * curve.points[i];
+    homogeneous[3] += basis[j] * w;
+  }
+  return homogeneous.head<3>() / homogeneous[3];
+}
 
 NurbsCurve reversed(const NurbsCurve& curve) {
   NurbsCurve out = curve;
