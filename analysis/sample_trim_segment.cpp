@@ -50,6 +50,17 @@ std::vector<double> segment_breaks(const TrimSegment& segment) {
   return out;
 }
 
+std::vector<double> segment_kinks(const TrimSegment& segment) {
+  const auto* c = std::get_if<NurbsCurve>(&segment);
+  if (!c) return segment_breaks(segment);
+  const double a = c->domain_start(), b = c->domain_end();
+  std::vector<double> out{a};
+  for (const auto& km : knot_multiplicities(c->knots))
+    if (km.value > a && km.value < b && km.multiplicity >= c->order - 1) out.push_back(km.value);
+  out.push_back(b);
+  return out;
+}
+
 bool is_degenerate_segment(const SurfaceEvaluator& surface, const TrimSegment& segment, double tolerance) {
   const auto breaks = segment_breaks(segment);
   const Eigen::Vector3d first = surface.point(segment_uv(segment, breaks.front()).x(), segment_uv(segment, breaks.front()).y());
@@ -106,7 +117,7 @@ std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, con
     const double lo = std::min(a, b), hi = std::max(a, b);
     return static_cast<long>(std::lower_bound(g->begin(), g->end(), hi) - std::upper_bound(g->begin(), g->end(), lo));
   };
-  std::vector<double> breaks = segment_breaks(segment);
+  std::vector<double> breaks = segment_kinks(segment);
   if (breaks.size() == 2) breaks.insert(breaks.begin() + 1, 0.5 * (breaks[0] + breaks[1]));
   const double t0 = breaks.front(), t1 = breaks.back();
   const double min_step = 1e-12 * std::max(1.0, std::abs(t1 - t0));

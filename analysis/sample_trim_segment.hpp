@@ -10,7 +10,7 @@
 // (1) has no rigorous remainder (it would need bounds on the pcurve's derivatives): with m = 8 the
 // unsampled part of a chord's sagitta is about 1/64 of it when the curvature varies less than a few
 // times over one chord; the 0.9 factor covers that (0.9 (1 + 1/64) < 0.92). Chords never straddle a
-// knot of the pcurve (the initial chords are its knot spans, polyline pieces for polylines).
+// C0 knot of the pcurve (the initial chords run between its kinks, polyline pieces for polylines).
 #include <Eigen/Core>
 #include <vector>
 
@@ -28,6 +28,9 @@ Eigen::Vector2d segment_uv(const TrimSegment& segment, double t);
 Eigen::Vector2d segment_tangent(const TrimSegment& segment, double t);
 // Parameters where the segment may bend: distinct knots in the domain, or the polyline's vertices.
 std::vector<double> segment_breaks(const TrimSegment& segment);
+// Parameters where it may have a corner: its ends and C0 knots (multiplicity >= degree), or the
+// polyline's vertices.
+std::vector<double> segment_kinks(const TrimSegment& segment);
 
 struct TrimSample {
   double t;
