@@ -85,6 +85,22 @@ void basis_function_derivatives(const std::vector<double>& knots, int order, int
   auto N = [&](int i, int j) -> double& { return ndu[i * order + j]; };
   double* left = line;
   double* right = line + order;
+  if (max_derivative == 0) {
+    // Values only (A2.2): one row instead of the triangle of A2.3.
+    ders[0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+      left[j] = t - knots[span + 1 - j];
+      right[j] = knots[span + j] - t;
+      double saved = 0.0;
+      for (int r = 0; r < j; ++r) {
+        const double temp = ders[r] / (right[r + 1] + left[j - r]);
+        ders[r] = saved + right[r + 1] * temp;
+        saved = left[j - r] * temp;
+      }
+      ders[j] = saved;
+    }
+    return;
+  }
   double* a[2] = {line + 2 * order, line + 3 * order};
   N(0, 0) = 1.0;
   for (int j = 1; j <= p; ++j) {
