@@ -118,7 +118,6 @@ std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, con
     return static_cast<long>(std::lower_bound(g->begin(), g->end(), hi) - std::upper_bound(g->begin(), g->end(), lo));
   };
   std::vector<double> breaks = segment_kinks(segment);
-  if (breaks.size() == 2) breaks.insert(breaks.begin() + 1, 0.5 * (breaks[0] + breaks[1]));
   const double t0 = breaks.front(), t1 = breaks.back();
   const double min_step = 1e-12 * std::max(1.0, std::abs(t1 - t0));
   auto sample = [&](double t) {
