@@ -136,14 +136,40 @@ double positive_root(double q, double c, double r) {
     return std::clamp(y, 1e-9, 1.0);
   }
 
-std::vector<double> spaced(const std::vector<double>& b, const std::vector<int>& steps) {
-    std::vector<double> out{b.front()};
-    for (size_t i = 0; i + 1 < b.size(); ++i) {
-      for (int s = 1; s < steps[i]; ++s) out.push_back(b[i] + (b[i + 1] - b[i]) * s / steps[i]);
-      out.push_back(b[i + 1]);
+// Grid lines over the knot spans b (span i wants `steps[i]` cells). The wanted density steps[i] /
+// length is integrated between hard lines (the ends and the C0 knots in `hard`), and lines go at equal
+// shares of it: a run of thin knot spans (linkrods.step: nine within 1e-4 of each other) then shares
+// cells with its neighbours instead of adding a row of slivers each.
+std::vector<double> graded(const std::vector<double>& b, const std::vector<double>& steps, const std::vector<double>& hard) {
+  std::vector<double> stops{b.front()};
+  for (double x : hard)
+    if (x > b.front() && x < b.back()) stops.push_back(x);
+  stops.push_back(b.back());
+  std::vector<double> out{b.front()};
+  size_t i = 0;  // span holding the walk
+  for (size_t h = 0; h + 1 < stops.size(); ++h) {
+    const double from = stops[h], to = stops[h + 1];
+    // Cumulative wanted cells at each span end within [from, to].
+    std::vector<double> xs{from}, cells{0.0};
+    for (size_t k = i; k + 1 < b.size() && b[k] < to; ++k) {
+      const double lo = std::max(b[k], from), hi = std::min(b[k + 1], to);
+      if (hi <= lo) continue;
+      xs.push_back(hi);
+      cells.push_back(cells.back() + steps[k] * (hi - lo) / (b[k + 1] - b[k]));
     }
-    return out;
+    while (i + 1 < b.size() && b[i + 1] <= to) ++i;
+    const int n = std::max(1, static_cast<int>(std::ceil(cells.back() - 1e-9)));
+    size_t k = 1;
+    for (int line = 1; line < n; ++line) {
+      const double target = cells.back() * line / n;
+      while (cells[k] < target) ++k;
+      const double w = (target - cells[k - 1]) / (cells[k] - cells[k - 1]);
+      out.push_back(xs[k - 1] + w * (xs[k] - xs[k - 1]));
+    }
+    out.push_back(to);
   }
+  return out;
+}
 
   // Liang-Barsky: does segment ab meet the box?
 bool segment_meets_box(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double x0, double x1, double y0,
@@ -166,7 +192,7 @@ bool segment_meets_box(const Eigen::Vector2d& a, const Eigen::Vector2d& b, doubl
   }
 
 
-// The tensor grid of a face (see the header, step 1): us and vs, knot values included.
+// The tensor grid of a face (see the header, step 1): us and vs, C0 knot values included.
 void plan_grid(Face& f, const std::vector<std::vector<Eigen::Vector2d>>& polys, double d) {
     const SurfaceEvaluator& e_ = *f.eval;
     const auto& ub = f.bound.u_breaks;
@@ -193,7 +219,7 @@ void plan_grid(Face& f, const std::vector<std::vector<Eigen::Vector2d>>& polys, 
         if (region.inside({0.5 * (ub[i] + ub[i + 1]), 0.5 * (vb[j] + vb[j + 1])})) used[i + j * nu] = 1;
 
     const double target = 0.85 * d;
-    std::vector<int> steps_u(nu, 1), steps_v(nv, 1);
+    std::vector<double> steps_u(nu, 0.0), steps_v(nv, 0.0);  // wanted cells per span (fractional)
     for (int j = 0; j < nv; ++j)
       for (int i = 0; i < nu; ++i) {
         if (!used[i + j * nu]) continue;
@@ -218,12 +244,18 @@ void plan_grid(Face& f, const std::vector<std::vector<Eigen::Vector2d>>& polys, 
         if (!any_normal) muu = fuu, muv = fuv, mvv = fvv;
         // One-step errors of the cell in each direction, and the mixed term.
         const double a = muu * hu * hu / 8, b = mvv * hv * hv / 8, c = 2 * muv * hu * hv / 8;
-        double x = 1, y = 1;  // step fractions 1 / n
-        if (a + b + c > target) {
+        // Step fractions 1 / n. A patch already within the target may share a cell with its
+        // neighbours: x = y > 1 then, and a flat patch wants no cell of its own at all.
+        const double whole = a + b + c;
+        double x = whole > 0 ? std::sqrt(target / whole) : 1e9, y = x;
+        if (whole > target) {
+          x = y = 1;
           if (a <= 0 || b <= 0) {
             // One direction is straight: all of the budget to the other.
             if (a > 0) x = positive_root(a, c, b - target);
             if (b > 0) y = positive_root(b, c, a - target);
+            if (a <= 0 && c <= 0) x = 1e9;  // straight and untwisted: no need to step at all
+            if (b <= 0 && c <= 0) y = 1e9;
             if (a <= 0 && b <= 0) x = y = std::sqrt(target / c);
           } else {
             const double t2 = target / (2 + c / std::sqrt(a * b));
@@ -232,11 +264,11 @@ void plan_grid(Face& f, const std::vector<std::vector<Eigen::Vector2d>>& polys, 
             else if (y > 1) y = 1, x = positive_root(a, c, b - target);
           }
         }
-        steps_u[i] = std::max(steps_u[i], static_cast<int>(std::min(4096.0, std::ceil(1 / std::max(x, 1e-9) - 1e-9))));
-        steps_v[j] = std::max(steps_v[j], static_cast<int>(std::min(4096.0, std::ceil(1 / std::max(y, 1e-9) - 1e-9))));
+        steps_u[i] = std::max(steps_u[i], std::min(4096.0, 1 / std::max(x, 1e-9)));
+        steps_v[j] = std::max(steps_v[j], std::min(4096.0, 1 / std::max(y, 1e-9)));
       }
-    f.us = spaced(ub, steps_u);
-    f.vs = spaced(vb, steps_v);
+    f.us = graded(ub, steps_u, f.bound.c0_u);
+    f.vs = graded(vb, steps_v, f.bound.c0_v);
   }
 
 
