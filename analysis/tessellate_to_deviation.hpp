@@ -3,11 +3,14 @@
 // within D of the exact (trimmed) surface and every point of the surface within D of the mesh.
 //
 // Method (a grid from estimates, then refinement with a certified bound):
-//  1. The (u,v) domain gets a tensor grid: every Bézier patch (distinct knot values) is divided into
-//     n_u x n_v cells, n chosen from second derivatives sampled in the patch so that the Filip-
-//     Magedson-Markot estimate (1/8)(h_u^2 M_uu + 2 h_u h_v M_uv + h_v^2 M_vv) is 0.85 D. The budget is
-//     split evenly between the two directions unless one needs a single step (a cylinder's straight
-//     direction gets one step per span: long thin triangles, which a deviation bound allows).
+//  1. The (u,v) domain gets a tensor grid. Each Bezier patch (distinct knot values) wants n_u x n_v
+//     cells, n chosen from second derivatives sampled in the patch so that the Filip-Magedson-Markot
+//     estimate (1/8)(h_u^2 M_uu + 2 h_u h_v M_uv + h_v^2 M_vv) is 0.85 D; n may be a fraction (a patch
+//     already within the target shares a cell with its neighbours). The wanted cells per span (the
+//     most any patch of that column or row wants) are spread evenly between C0 knot lines, so smooth
+//     knots need no grid line of their own. The budget is split evenly between the two directions
+//     unless one needs a single step (a cylinder's straight direction: long thin triangles, which a
+//     deviation bound allows).
 //  2. Trimming loops are sampled by the deviation of their 3D image (sample_trim_segment). Edges
 //     shared by several faces (TrimEdgeRef) are sampled once, on their first face; the other faces
 //     find the (u,v) of the same 3D points by point inversion (Newton on the curve on their surface
