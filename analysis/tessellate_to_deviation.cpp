@@ -136,6 +136,12 @@ double positive_root(double q, double c, double r) {
     return std::clamp(y, 1e-9, 1.0);
   }
 
+// Grid lines of g strictly between a and b.
+int lines_between(const std::vector<double>& g, double a, double b) {
+  const double lo = std::min(a, b), hi = std::max(a, b);
+  return static_cast<int>(std::lower_bound(g.begin(), g.end(), hi) - std::upper_bound(g.begin(), g.end(), lo));
+}
+
 // Grid lines over the knot spans b (span i wants `steps[i]` cells). The wanted density steps[i] /
 // length is integrated between hard lines (the ends and the C0 knots in `hard`), and lines go at equal
 // shares of it: a run of thin knot spans (linkrods.step: nine within 1e-4 of each other) then shares
@@ -432,11 +438,6 @@ class FaceMesher {
 
   Eigen::Vector2d inside_domain(const Eigen::Vector2d& uv) const {
     return {std::clamp(uv.x(), e_.u_start(), e_.u_end()), std::clamp(uv.y(), e_.v_start(), e_.v_end())};
-  }
-
-  static int lines_between(const std::vector<double>& g, double a, double b) {
-    const double lo = std::min(a, b), hi = std::max(a, b);
-    return static_cast<int>(std::lower_bound(g.begin(), g.end(), hi) - std::upper_bound(g.begin(), g.end(), lo));
   }
 
   static int index_at_or_below(const std::vector<double>& g, double x) {
@@ -1069,19 +1070,20 @@ class Tessellator {
   // than one line of its grid. A curve is sampled on its first face; on the others, triangles along
   // such a chord could never be certified, and refining towards it only makes slivers.
   void chords_too_coarse(const Face& f, std::set<std::pair<int, int>>& out) const {
-    auto crossings = [](const std::vector<double>& g, double a, double b) {
-      return std::lower_bound(g.begin(), g.end(), std::max(a, b)) - std::upper_bound(g.begin(), g.end(), std::min(a, b));
-    };
-    for (const auto& loop : f.points)
+    for (const auto& loop : f.points) {
+      std::vector<Eigen::Vector3d> on_face(loop.size());  // this face's points at the loop's (u,v)
+      for (size_t k = 0; k < loop.size(); ++k) on_face[k] = f.eval->point(loop[k].uv.x(), loop[k].uv.y());
       for (size_t k = 0; k < loop.size(); ++k) {
         const LoopPoint& p = loop[k];
         if (p.curve < 0) continue;
+        const size_t next = (k + 1) % loop.size();
         const Eigen::Vector2d& a = p.uv;
-        const Eigen::Vector2d& b = loop[(k + 1) % loop.size()].uv;
-        if (crossings(f.us, a.x(), b.x()) > 1 || crossings(f.vs, a.y(), b.y()) > 1 ||
-            !surface_chord_within(*f.eval, f.bound, a, f.eval->point(a.x(), a.y()), b, f.eval->point(b.x(), b.y()), d_))
+        const Eigen::Vector2d& b = loop[next].uv;
+        if (lines_between(f.us, a.x(), b.x()) > 1 || lines_between(f.vs, a.y(), b.y()) > 1 ||
+            !surface_chord_within(*f.eval, f.bound, a, on_face[k], b, on_face[next], d_))
           out.emplace(p.curve, p.span);
       }
+    }
   }
 
   // A new sample in the middle (in the origin segment's parameter) of span `span` of curve c.
