@@ -50,6 +50,11 @@ std::vector<double> segment_breaks(const TrimSegment& segment) {
   return out;
 }
 
+int lines_between(const std::vector<double>& lines, double a, double b) {
+  const double lo = std::min(a, b), hi = std::max(a, b);
+  return static_cast<int>(std::lower_bound(lines.begin(), lines.end(), hi) - std::upper_bound(lines.begin(), lines.end(), lo));
+}
+
 std::vector<double> segment_kinks(const TrimSegment& segment) {
   const auto* c = std::get_if<NurbsCurve>(&segment);
   if (!c) return segment_breaks(segment);
@@ -112,11 +117,7 @@ std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, con
                                             const TrimSegment& segment, double max_deviation,
                                             const Eigen::Vector3d& start_point, const Eigen::Vector3d& end_point,
                                             const std::vector<double>* grid_u, const std::vector<double>* grid_v) {
-  auto crossings = [](const std::vector<double>* g, double a, double b) {
-    if (!g) return 0L;
-    const double lo = std::min(a, b), hi = std::max(a, b);
-    return static_cast<long>(std::lower_bound(g->begin(), g->end(), hi) - std::upper_bound(g->begin(), g->end(), lo));
-  };
+  auto crossings = [](const std::vector<double>* g, double a, double b) { return g ? lines_between(*g, a, b) : 0; };
   std::vector<double> breaks = segment_kinks(segment);
   const double t0 = breaks.front(), t1 = breaks.back();
   const double min_step = 1e-12 * std::max(1.0, std::abs(t1 - t0));

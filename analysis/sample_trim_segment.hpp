@@ -41,6 +41,9 @@ struct TrimSample {
 // True when S(c(t)) moves less than `tolerance` over the whole segment (a pole or a collapsed edge).
 bool is_degenerate_segment(const SurfaceEvaluator& surface, const TrimSegment& segment, double tolerance);
 
+// How many of the sorted grid `lines` lie strictly between a and b.
+int lines_between(const std::vector<double>& lines, double a, double b);
+
 // Criterion (2) alone, for the straight (u,v) chord from a_uv to b_uv whose 3D ends are a and b.
 bool surface_chord_within(const SurfaceEvaluator& surface, const SurfaceDeviationBound& bound, const Eigen::Vector2d& a_uv,
                           const Eigen::Vector3d& a, const Eigen::Vector2d& b_uv, const Eigen::Vector3d& b, double d);

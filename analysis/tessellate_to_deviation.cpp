@@ -136,12 +136,6 @@ double positive_root(double q, double c, double r) {
     return std::clamp(y, 1e-9, 1.0);
   }
 
-// Grid lines of g strictly between a and b.
-int lines_between(const std::vector<double>& g, double a, double b) {
-  const double lo = std::min(a, b), hi = std::max(a, b);
-  return static_cast<int>(std::lower_bound(g.begin(), g.end(), hi) - std::upper_bound(g.begin(), g.end(), lo));
-}
-
 // Grid lines over the knot spans b (span i wants `steps[i]` cells). The wanted density steps[i] /
 // length is integrated between hard lines (the ends and the C0 knots in `hard`), and lines go at equal
 // shares of it: a run of thin knot spans (linkrods.step: nine within 1e-4 of each other) then shares
@@ -363,15 +357,16 @@ class FaceMesher {
       for (size_t k = 0; k < loop.size(); ++k) {
         const LoopPoint& p = loop[k];
         given.push_back(p.uv);
-        ids.push_back(add_vertex(inside_domain(p.uv), p.point, p.node));
-        poly.push_back(inside_domain(p.uv));
+        const Eigen::Vector2d uv = inside_domain(p.uv);
+        ids.push_back(add_vertex(uv, p.point, p.node));
+        poly.push_back(uv);
         if (!p.degenerate) continue;
         const Eigen::Vector2d next = loop[(k + 1) % loop.size()].uv;
         const int n = 1 + lines_between(us_, p.uv.x(), next.x()) + lines_between(vs_, p.uv.y(), next.y());
         for (int s = 1; s < n; ++s) {
-          const Eigen::Vector2d uv = inside_domain(segment_uv(*p.degenerate, p.t + (p.t_next - p.t) * s / n));
-          ids.push_back(add_vertex(uv, p.point, p.node));
-          poly.push_back(uv);
+          const Eigen::Vector2d along = inside_domain(segment_uv(*p.degenerate, p.t + (p.t_next - p.t) * s / n));
+          ids.push_back(add_vertex(along, p.point, p.node));
+          poly.push_back(along);
         }
       }
       if (ids.size() < 3) throw GeometryError(f_.name, "a trimming loop has fewer than 3 distinct points");
