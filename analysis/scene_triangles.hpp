@@ -5,7 +5,7 @@
 
 namespace cadnurbs {
 
-// Every TriangleMesh shape transformed by its node's world transform and appended; surfaces and
+// Every TriangleMesh and (fanned) PolygonMesh shape transformed by its node's world transform and appended; surfaces and
 // curves are left out. Vertices are not welded.
 TriangleMesh scene_triangles(const Scene& scene);
 

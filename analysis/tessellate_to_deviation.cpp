@@ -1122,12 +1122,12 @@ void collect_faces(SceneNode& node, const std::string& path, const Eigen::Affine
     if (!t) continue;
     Face f;
     f.trimmed = t;
-    f.name = path + "/" + (shape.name.empty() ? "shape " + std::to_string(i) : shape.name);
+    f.name = path + "/" + (display_name(shape).empty() ? "shape " + std::to_string(i) : display_name(shape));
     f.world = world;
     faces.push_back(std::move(f));
     shapes.push_back(&shape);
   }
-  for (auto& child : node.children) collect_faces(child, path + "/" + child.name, world, faces, shapes);
+  for (auto& child : node.children) collect_faces(child, path + "/" + display_name(child), world, faces, shapes);
 }
 
 }  // namespace

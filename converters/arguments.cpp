@@ -47,16 +47,16 @@ Arguments parse_arguments(const std::string& command, const std::vector<std::str
       name = name.substr(0, name.find('='));
     }
     if (flag_options.count(name)) {
-      if (inline_value) throw UsageError(command + ": option --" + name + " takes no value");
+      if (inline_value) throw UsageError("option --" + name + " takes no value");
       out.flags.insert(name);
     } else if (value_options.count(name)) {
       if (!inline_value) {
-        if (i + 1 >= args.size()) throw UsageError(command + ": option --" + name + " needs a value");
+        if (i + 1 >= args.size()) throw UsageError("option --" + name + " needs a value");
         value = args[++i];
       }
       out.values[name] = value;
     } else {
-      throw UsageError(command + ": unknown option '--" + name + "' (see cadnurbs " + command + " --help)");
+      throw UsageError("unknown option '--" + name + "' (see cadnurbs " + command + " --help)");
     }
   }
   return out;

@@ -4,32 +4,38 @@
 #include "converters/arguments.hpp"
 #include "converters/capping_files.hpp"
 #include "converters/commands.hpp"
+#include "converters/file_formats.hpp"
 #include "formats/common/file_io.hpp"
 #include "samples/capping_shapes.hpp"
 
 namespace cadnurbs {
 
 namespace {
-const char* kHelp =
+std::string help() {
+  std::string set;
+  for (const auto& ext : capping_extensions()) set += " " + ext;
+  return
     "usage: cadnurbs capping --shape NAME -o OUT [options]\n"
     "Generates a stair capping (seed 001, ch. 4): the handrail profile swept along a path as one\n"
     "exact rational quadratic NURBS, the handrail connections closed by trimmed planar lids.\n"
     "  --shape NAME             capping-90, capping-end, capping-post, or 'all'\n"
-    "  -o OUT                   a file (.wrl .x3dv .x3d .stl) or, with a trailing '/' or an\n"
-    "                           existing directory, a folder that gets NAME.wrl .x3dv .x3d .stl\n"
+    "  -o OUT                   a file (" + extension_list(false) + ")\n"
+    "                           or, with a trailing '/' or an existing directory, a folder that\n"
+    "                           gets NAME with each of" + set + "\n"
     "  --path FILE --profile FILE   outlines in the text format of samples/shapes/README.md\n"
     "                           (instead of a bundled shape; NAME names the result)\n"
     "  --max-chord-deviation D  STL: arcs divided so no chord is farther than D mm from its arc\n"
     "                           (default 0.1)\n"
     "  --without-lids           NURBS: the swept body alone, connections left open (for viewers\n"
     "                           that ignore trimming)\n";
+}
 }  // namespace
 
 int run_capping(const std::vector<std::string>& args) {
   const Arguments a =
       parse_arguments("capping", args, {"shape", "output", "path", "profile", "max-chord-deviation"}, {"help", "without-lids"});
   if (a.has("help")) {
-    std::cout << kHelp;
+    std::cout << help();
     return 0;
   }
   if (!a.has("shape") || !a.has("output") || !a.positional.empty())

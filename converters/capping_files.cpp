@@ -2,13 +2,15 @@
 
 #include <filesystem>
 
-#include "converters/scene_io.hpp"
+#include "converters/file_formats.hpp"
 #include "formats/common/file_io.hpp"
 
 namespace cadnurbs {
 
-const std::vector<std::string>& capping_extensions() {
-  static const std::vector<std::string> extensions = {".wrl", ".x3dv", ".x3d", ".stl", ".step", ".iges"};
+std::vector<std::string> capping_extensions() {
+  std::vector<std::string> extensions;
+  for (const auto& format : file_formats())
+    if (format.in_samples && format.write) extensions.push_back(format.extensions.front());
   return extensions;
 }
 
@@ -16,7 +18,7 @@ void write_capping(const CappingDefinition& capping, const std::string& path, do
                    bool with_lids) {
   Scene scene = capping_nurbs(capping);
   if (!with_lids) scene.root.shapes.resize(1);  // the body comes first
-  if (is_mesh_only_format(path)) scene.root.shapes = {{capping.name, capping_mesh(capping, max_chord_deviation), std::nullopt}};
+  if (output_format(path).meshes_only) scene.root.shapes = {{capping.name, capping_mesh(capping, max_chord_deviation), std::nullopt}};
   SceneWriteOptions options;
   options.title = capping.name;
   write_scene(path, scene, options);

@@ -7,10 +7,11 @@
 
 namespace cadnurbs {
 
-// The extensions a capping is written in: NURBS as .wrl, .x3dv, .x3d, .step, .iges; triangles as .stl.
-const std::vector<std::string>& capping_extensions();
+// The extensions a capping is written in: the formats of file_formats() marked in_samples (NURBS as
+// .wrl, .x3dv, .x3d, .step, .iges; triangles as .stl).
+std::vector<std::string> capping_extensions();
 
-// Writes `capping` to `path`: NURBS for .wrl/.x3dv/.x3d/.step/.iges, the thesis STL rule for .stl.
+// Writes `capping` to `path`: NURBS, or for a format that holds meshes only the thesis STL rule.
 // `with_lids` false leaves the handrail connections open (for viewers that ignore trimming).
 void write_capping(const CappingDefinition& capping, const std::string& path, double max_chord_deviation,
                    bool with_lids = true);

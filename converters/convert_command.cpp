@@ -1,39 +1,72 @@
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
+#include "analysis/compact_scene.hpp"
 #include "analysis/tessellate_to_deviation.hpp"
 #include "analysis/tessellate_uniform.hpp"
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
-#include "converters/scene_io.hpp"
+#include "converters/file_formats.hpp"
 #include "core/bounding_box.hpp"
+#include "core/length_unit.hpp"
 
 namespace cadnurbs {
 
 namespace {
-const char* kHelp =
-    "usage: cadnurbs convert IN -o OUT [options]\n"
-    "Reads IN (.step .stp .iges .igs .stl .wrl .x3dv .x3d) and writes OUT in the format its\n"
-    "extension names (.wrl VRML97 with NURBS nodes, .x3dv X3D classic, .x3d X3D XML, .step, .iges;\n"
-    "meshes: .stl .ply, or IndexedFaceSet in .wrl .x3dv .x3d with --mesh).\n"
-    "  --mesh              write triangles: every NURBS surface tessellated so that no point of\n"
-    "                      the mesh is farther than the deviation from the exact surface\n"
-    "  --deviation D       that maximum deviation in mm (default: 0.001 x the bounding-box diagonal)\n"
-    "  --steps N           instead: uniform tessellation, N steps per knot span (seed 000's method)\n"
-    "  --precision N       write every number with N significant digits (default: the fewest\n"
-    "                      digits that keep coordinates within 1e-6 of the model size)\n"
-    "  --euclidean         write/read control points as Euclidean points with separate weights\n"
-    "                      (default: homogeneous w*P, the convention of current viewers)\n"
-    "  --self-contained    VRML97: paste the NURBS PROTO implementations into the file\n"
-    "A STEP/IGES face that cannot be written as a trimmed NURBS is written as a mesh instead;\n"
-    "convert lists each such face and says how many there were.\n";
+
+std::string help() {
+  return "usage: cadnurbs convert IN -o OUT [options]\n"
+         "Reads IN (" + extension_list(true) + ")\n"
+         "and writes OUT in the format its extension names (" + extension_list(false) + ").\n"
+         "VRML/X3D NURBS output is compact and exact by default: repeated geometry and appearances\n"
+         "written once (DEF/USE), straight trimming runs as polylines, planar faces bounded by straight\n"
+         "edges as exact polygons, knots as small numbers where an affine map allows; nothing moves by\n"
+         "more than the written precision. gzip'd forms: .wrz .wrl.gz .x3dvz .x3dz (read too).\n"
+         "  --mesh              write triangles: every NURBS surface tessellated so that no point of\n"
+         "                      the mesh is farther than the deviation from the exact surface\n"
+         "                      (formats that hold triangles only imply it)\n"
+         "  --deviation D       that maximum deviation, in the output unit (default: 0.001 x the\n"
+         "                      bounding-box diagonal)\n"
+         "  --steps N           instead: uniform tessellation, N steps per knot span (seed 000's method)\n"
+         "  --exact-nurbs       every face as the trimmed NURBS of its source, orders, knots, weights and\n"
+         "                      control points unchanged (only DEF/USE sharing applies)\n"
+         "  --units U           output lengths in U: mm (default), cm, m, in, kicad (0.1 inch, the unit\n"
+         "                      KiCad's VRML reader assumes); the file records the unit\n"
+         "  --precision N       write every number with N significant digits (default: the fewest\n"
+         "                      digits that keep coordinates within 1e-6 of the model size)\n"
+         "  --pretty            VRML/X3D: indented, one field per line\n"
+         "  --euclidean         write/read control points as Euclidean points with separate weights\n"
+         "                      (default: homogeneous w*P, the convention of current viewers)\n"
+         "  --self-contained    VRML97: paste the NURBS PROTO implementations into the file\n"
+         "A STEP/IGES face that cannot be written as a trimmed NURBS is written as a mesh instead;\n"
+         "convert lists each such face and says how many there were.\n";
+}
+
+// The written precision: what compaction may move a coordinate by (model units).
+double written_tolerance(const Scene& scene, int significant_digits) {
+  const auto box = scene_bounding_box(scene);
+  const double diagonal = box.isEmpty() ? 1.0 : std::max(box.diagonal().norm(), 1e-300);
+  if (significant_digits <= 0) return 1e-6 * diagonal;
+  const double largest = box.isEmpty() ? 1.0 : std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
+  return 0.5 * std::pow(10.0, 1 - significant_digits) * std::max(largest, 1e-300);
+}
+
+void print_compaction(const std::string& out, const CompactReport& r) {
+  std::cout << out << ": compact: " << r.planar_faces << " planar faces as exact polygons in " << r.polygon_meshes
+            << " face sets, " << r.untrimmed << " trims that were the domain boundary dropped, " << r.straight_runs
+            << " straight trimming runs as polylines, " << r.reparametrised << " knot vectors as small numbers, " << r.knots_removed
+            << " trimming-curve knots removed, "
+            << r.instanced << " repeated parts placed as copies\n";
+}
+
 }  // namespace
 
 int run_convert(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("convert", args, {"output", "steps", "precision", "deviation"},
-                                      {"mesh", "euclidean", "self-contained", "help"});
+  const Arguments a = parse_arguments("convert", args, {"output", "steps", "precision", "deviation", "units"},
+                                      {"mesh", "euclidean", "self-contained", "exact-nurbs", "pretty", "help"});
   if (a.has("help")) {
-    std::cout << kHelp;
+    std::cout << help();
     return 0;
   }
   if (a.positional.size() != 1 || !a.has("output")) throw UsageError("needs one input and -o OUT (see --help)");
@@ -47,24 +80,32 @@ int run_convert(const std::vector<std::string>& args) {
   if (a.has("deviation") && a.has("steps")) throw UsageError("--deviation and --steps exclude each other");
   const int precision = a.integer("precision", 0);
   if (a.has("precision") && (precision < 1 || precision > 17)) throw UsageError("--precision must be 1 to 17");
+  std::optional<LengthUnit> unit;
+  if (a.has("units")) {
+    unit = length_unit_named(a.value("units"));
+    if (!unit) throw UsageError("--units: unknown unit '" + a.value("units") + "' (mm, cm, m, in, kicad)");
+  }
+  const FileFormat& format = output_format(out);  // refuse an unknown output before the work
+  input_format(in);
 
   const bool homogeneous = !a.has("euclidean");
-  const LoadedScene loaded = load_scene(in, homogeneous);
-  const Scene& scene = loaded.scene;
+  const BrepTranslation loaded = load_scene(in, homogeneous);
   for (const auto& f : loaded.fallbacks)
     std::cerr << in << ": " << f.node << " face " << f.face_index << " (" << f.surface_type
               << ") written as a mesh: " << f.reason << "\n";
+  const Scene scene = unit ? in_unit(loaded.scene, *unit) : loaded.scene;
 
   SceneWriteOptions options;
   options.homogeneous_control_points = homogeneous;
   options.significant_digits = precision;
   options.self_contained = a.has("self-contained");
+  options.pretty = a.has("pretty");
   options.title = std::filesystem::path(in).filename().string();
   const auto box = scene_bounding_box(scene);
   // The mesh keeps the NURBS file's Viewpoint so that both render from the same place.
   options.viewpoint = framing_viewpoint(box);
-  const bool mesh = a.has("mesh") || a.has("steps") || a.has("deviation") || is_mesh_only_format(out);
-  Scene written = scene;
+  const bool mesh = a.has("mesh") || a.has("steps") || a.has("deviation") || format.meshes_only;
+  Scene written;
   std::string how;
   if (mesh && steps > 0) {
     written = tessellate_uniform(scene, steps);
@@ -73,12 +114,21 @@ int run_convert(const std::vector<std::string>& args) {
     const double d = deviation > 0 ? deviation : 1e-3 * box.diagonal().norm();
     TessellationReport report;
     written = tessellate_to_deviation(scene, d, &report);
-    how = ", max deviation " + std::to_string(d) + " mm";
+    how = ", max deviation " + std::to_string(d) + " " + scene.unit.name + "; certified " +
+          std::to_string(report.certified_deviation) + ", " + std::to_string(report.uncertified_triangles) +
+          " uncertified triangles, " + std::to_string(report.unshared_edge_uses) + " unshared edge uses";
+  } else if (format.compact && !a.has("exact-nurbs")) {
+    CompactReport report;
+    written = compact_scene(scene, written_tolerance(scene, precision), &report);
+    print_compaction(out, report);
+  } else {
+    written = scene;
   }
   write_scene(out, written, options);
   const SceneCounts c = count_entities(written);
-  std::cout << out << ": " << c.surfaces << " NURBS surfaces, " << c.meshes << " meshes (" << c.mesh_triangles
-            << " triangles" << how << ")\n";
+  std::cout << out << ": " << c.surfaces << " NURBS surfaces, " << c.polygon_meshes << " polygon sets ("
+            << c.polygons << " polygons), " << c.meshes << " meshes (" << c.mesh_triangles << " triangles" << how
+            << ")\n";
   if (loaded.face_count > 0)
     std::cout << in << ": " << loaded.face_count << " faces: " << loaded.face_count - int(loaded.fallbacks.size())
               << " as trimmed NURBS, " << loaded.fallbacks.size() << " fell back to a mesh\n";

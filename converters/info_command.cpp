@@ -4,7 +4,7 @@
 #include "analysis/trimmed_surface_area.hpp"
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
-#include "converters/scene_io.hpp"
+#include "converters/file_formats.hpp"
 #include "core/bounding_box.hpp"
 
 namespace cadnurbs {
@@ -33,7 +33,7 @@ int run_info(const std::vector<std::string>& args) {
   double total_area = 0;
   int index = 0;
   for_each_shape(scene, [&](const Shape& shape, const Eigen::Affine3d& world, const Colour&) {
-    std::cout << "  [" << index++ << "] " << (shape.name.empty() ? "(unnamed)" : shape.name) << ": ";
+    std::cout << "  [" << index++ << "] " << (display_name(shape).empty() ? "(unnamed)" : display_name(shape)) << ": ";
     if (!shape.source_type.empty()) std::cout << shape.source_type << " as ";
     double area = 0;
     if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry)) {
@@ -54,6 +54,11 @@ int run_info(const std::vector<std::string>& args) {
       for (auto& p : w.positions) p = world * p;
       area = mesh_area(w);
       std::cout << "mesh, " << m->positions.size() << " vertices, " << m->triangles.size() << " triangles";
+    } else if (const auto* pm = std::get_if<PolygonMesh>(&shape.geometry)) {
+      TriangleMesh w = triangulated(*pm);
+      for (auto& p : w.positions) p = world * p;
+      area = mesh_area(w);
+      std::cout << "planar polygons, " << pm->positions.size() << " vertices, " << pm->polygons.size() << " polygons";
     }
     if (area > 0) std::cout << ", area " << std::setprecision(8) << area;
     std::cout << "\n";

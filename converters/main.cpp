@@ -10,8 +10,9 @@ namespace {
 const char* kUsage =
     "usage: cadnurbs COMMAND [options]\n"
     "commands:\n"
-    "  convert IN -o OUT [--mesh] [--steps N] [--precision N] [--euclidean] [--self-contained]\n"
-    "  info    IN\n"
+    "  convert IN -o OUT [--mesh] [--deviation D | --steps N] [--exact-nurbs] [--units U]\n"
+    "                    [--precision N] [--pretty] [--euclidean] [--self-contained]\n"
+    "  info    IN [--euclidean]\n"
     "  capping --shape NAME|all -o OUT [--path FILE --profile FILE] [--max-chord-deviation D]\n"
     "  demo    [-o DIR]\n"
     "'cadnurbs COMMAND --help' tells more.\n";
@@ -22,9 +23,13 @@ int main(int argc, char** argv) {
   using namespace cadnurbs;
   const std::map<std::string, int (*)(const std::vector<std::string>&)> commands = {
       {"convert", run_convert}, {"info", run_info}, {"capping", run_capping}, {"demo", run_demo}};
-  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+  if (argc < 2) {
+    std::cerr << kUsage;
+    return 2;
+  }
+  if (const std::string first = argv[1]; first == "--help" || first == "-h" || first == "help") {
     std::cout << kUsage;
-    return argc < 2 ? 2 : 0;
+    return 0;
   }
   const auto command = commands.find(argv[1]);
   if (command == commands.end()) {

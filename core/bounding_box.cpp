@@ -11,6 +11,8 @@ Eigen::AlignedBox3d scene_bounding_box(const Scene& scene) {
       for (const auto& p : c->points) box.extend(world * p);
     else if (const auto* m = std::get_if<TriangleMesh>(&shape.geometry))
       for (const auto& p : m->positions) box.extend(world * p);
+    else if (const auto* pm = std::get_if<PolygonMesh>(&shape.geometry))
+      for (const auto& p : pm->positions) box.extend(world * p);
   });
   return box;
 }

@@ -1,5 +1,6 @@
 #include "core/nurbs_surface.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/geometry_error.hpp"
@@ -72,6 +73,33 @@ Eigen::Vector3d surface_normal(const NurbsSurface& s, double u, double v) {
     if (scale > 0 && n.norm() > 1e-10 * scale) return n.normalized();
   }
   return Eigen::Vector3d::Zero();
+}
+
+double surface_derivative_bound(const NurbsSurface& s) {
+  double bound = 0.0;
+  for (int j = 0; j < s.v_count; ++j)
+    for (int i = 0; i + 1 < s.u_count; ++i) {
+      const double span = s.u_knots[i + s.u_order] - s.u_knots[i + 1];
+      if (span > 0.0) bound = std::max(bound, (s.u_order - 1) * (s.point(i + 1, j) - s.point(i, j)).norm() / span);
+    }
+  for (int i = 0; i < s.u_count; ++i)
+    for (int j = 0; j + 1 < s.v_count; ++j) {
+      const double span = s.v_knots[j + s.v_order] - s.v_knots[j + 1];
+      if (span > 0.0) bound = std::max(bound, (s.v_order - 1) * (s.point(i, j + 1) - s.point(i, j)).norm() / span);
+    }
+  if (s.is_rational()) {
+    const auto [lo, hi] = std::minmax_element(s.weights.begin(), s.weights.end());
+    bound *= (*hi / *lo) * (*hi / *lo);
+  }
+  return bound;
+}
+
+double trim_parameter_tolerance(const NurbsSurface& surface, double tau) {
+  const double domain = std::max(surface.u_end() - surface.u_start(), surface.v_end() - surface.v_start());
+  const double bound = surface_derivative_bound(surface);
+  double tolerance = 1e-3 * domain;
+  if (bound > 0.0) tolerance = std::min(tolerance, 0.5 * tau / bound);
+  return tolerance;
 }
 
 }  // namespace cadnurbs

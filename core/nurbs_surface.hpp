@@ -34,6 +34,14 @@ Eigen::Vector3d surface_point(const NurbsSurface& surface, double u, double v);
 std::vector<std::vector<Eigen::Vector3d>> surface_derivatives(const NurbsSurface& surface, double u, double v,
                                                               int max_derivative);
 
+// L = bound on |∂S/∂u| and |∂S/∂v| from the control net: max over rows and columns of
+// (k-1)·|P_{i+1} - P_i| / (t_{i+k} - t_{i+1}), times (w_max/w_min)^2 for rational surfaces.
+double surface_derivative_bound(const NurbsSurface& surface);
+
+// A distance in (u,v) that moves the surface point by at most τ/2 (τ = coordinate_tolerance): τ/(2·L),
+// at most 1/1000 of the domain's size. The precision of trimming curves written within τ.
+double trim_parameter_tolerance(const NurbsSurface& surface, double coordinate_tolerance);
+
 // Unit normal Su x Sv at (u, v); near a degenerate point (Su x Sv ~ 0) it steps a little into the
 // domain. Returns zero only if the surface is degenerate around (u, v).
 Eigen::Vector3d surface_normal(const NurbsSurface& surface, double u, double v);

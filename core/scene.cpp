@@ -7,18 +7,21 @@ namespace {
 void validate_node(const SceneNode& node, const std::string& path) {
   for (size_t i = 0; i < node.shapes.size(); ++i) {
     const auto& shape = node.shapes[i];
-    const std::string entity = path + "/" + (shape.name.empty() ? "shape " + std::to_string(i) : shape.name);
+    const std::string entity =
+        path + "/" + (display_name(shape).empty() ? "shape " + std::to_string(i) : display_name(shape));
     std::visit([&](const auto& g) { validate(g, entity); }, shape.geometry);
   }
   for (size_t i = 0; i < node.children.size(); ++i) {
     const auto& child = node.children[i];
-    validate_node(child, path + "/" + (child.name.empty() ? "node " + std::to_string(i) : child.name));
+    validate_node(child, path + "/" + (display_name(child).empty() ? "node " + std::to_string(i) : display_name(child)));
   }
 }
 
 }  // namespace
 
-void validate(const Scene& scene) { validate_node(scene.root, scene.root.name.empty() ? "scene" : scene.root.name); }
+void validate(const Scene& scene) {
+  validate_node(scene.root, display_name(scene.root).empty() ? "scene" : display_name(scene.root));
+}
 
 SceneCounts count_entities(const Scene& scene) {
   SceneCounts c;
@@ -46,6 +49,10 @@ SceneCounts count_entities(const Scene& scene) {
       ++c.meshes;
       c.mesh_vertices += static_cast<long>(mesh->positions.size());
       c.mesh_triangles += static_cast<long>(mesh->triangles.size());
+    } else if (const auto* polygons = std::get_if<PolygonMesh>(&shape.geometry)) {
+      ++c.polygon_meshes;
+      c.polygons += static_cast<long>(polygons->polygons.size());
+      c.polygon_vertices += static_cast<long>(polygons->positions.size());
     }
   });
   return c;

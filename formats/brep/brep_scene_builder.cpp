@@ -62,9 +62,9 @@ void BrepSceneBuilder::add_faces(SceneNode& node, const std::string& node_path, 
     const Converted& converted = convert(faces[i]);
     const int number = static_cast<int>(i) + 1;
     Shape shape;
-    shape.name = "face " + std::to_string(number);
+    shape.source_entity = "face " + std::to_string(number);
     if (!converted.fallback_reason.empty()) {
-      shape.name += " (mesh)";
+      shape.source_entity += " (mesh)";
       fallbacks_.push_back({node_path, number, converted.surface_type, converted.fallback_reason});
     }
     shape.geometry = converted.geometry;
@@ -95,7 +95,7 @@ void BrepSceneBuilder::add_shape(SceneNode& node, const std::string& node_path, 
   }
   auto add_child = [&](const TopoDS_Shape& container, const std::string& name) {
     SceneNode child;
-    child.name = name;
+    child.source_entity = name;
     if (const Colour* colour = colours.Seek(container)) child.colour = *colour;
     add_faces(child, node_path + "/" + name, faces_of(container), colours);
     node.children.push_back(std::move(child));

@@ -25,10 +25,12 @@ class BrepSceneBuilder {
 
   // Adds the content of `shape` to `node` (`node_path`: its name path, for reports):
   // - a shape holding exactly one solid or shell and no other face: its faces become the node's shapes;
-  // - otherwise each solid ("solid K") and each shell outside the solids ("shell K") becomes a child node;
+  // - otherwise each solid ("solid K") and each shell outside the solids ("shell K") becomes a child node
+  //   (those are its source_entity: generated, not names from the file);
   // - faces outside any shell become the node's shapes.
-  // Face shapes are named "face N" (N: index in the solid's/shell's TopExp::MapShapes order) or, when
-  // written as a mesh, "face N (mesh)"; colours from `colours` (face, else solid/shell node colour).
+  // Face shapes have no name (STEP/IGES faces rarely carry one) and the source_entity "face N" (N: index in
+  // the solid's/shell's TopExp::MapShapes order) or, when written as a mesh, "face N (mesh)"; colours from
+  // `colours` (face, else solid/shell node colour).
   // A face used again (another instance of a part) reuses its first conversion.
   void add_shape(SceneNode& node, const std::string& node_path, const TopoDS_Shape& shape,
                  const ShapeColours& colours);

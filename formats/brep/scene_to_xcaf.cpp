@@ -23,6 +23,7 @@
 
 #include "core/bounding_box.hpp"
 #include "core/geometry_error.hpp"
+#include "core/length_unit.hpp"
 #include "formats/brep/nurbs_to_occt.hpp"
 #include "formats/brep/trimmed_surface_to_face.hpp"
 
@@ -31,25 +32,6 @@ namespace cadnurbs {
 namespace {
 
 // The scene with coordinates in millimetres.
-void scale_node(SceneNode& node, double factor) {
-  node.transform.translation() *= factor;
-  for (auto& shape : node.shapes) {
-    std::visit(
-        [factor](auto& g) {
-          using T = std::decay_t<decltype(g)>;
-          if constexpr (std::is_same_v<T, TrimmedSurface>) {
-            for (auto& p : g.surface.points) p *= factor;
-          } else if constexpr (std::is_same_v<T, NurbsCurve>) {
-            for (auto& p : g.points) p *= factor;
-          } else {
-            for (auto& p : g.positions) p *= factor;
-          }
-        },
-        shape.geometry);
-  }
-  for (auto& child : node.children) scale_node(child, factor);
-}
-
 TopLoc_Location to_location(const Eigen::Affine3d& transform, const std::string& entity) {
   if (transform.matrix().isIdentity(0.0)) return TopLoc_Location();
   const auto& m = transform.matrix();
@@ -103,7 +85,7 @@ class XcafWriter {
       shapes_->AddComponent(assembly, add_part(own, path), TopLoc_Location());
     }
     for (const auto& child : node.children) {
-      const std::string child_path = path + "/" + child.name;
+      const std::string child_path = path + "/" + display_name(child);
       const TDF_Label component = shapes_->AddComponent(assembly, add(child, child_path), to_location(child.transform, child_path));
       set_name(component, child.name);
     }
@@ -117,11 +99,14 @@ class XcafWriter {
     std::vector<TopoDS_Edge> curves;
     for (size_t i = 0; i < node.shapes.size(); ++i) {
       const Shape& shape = node.shapes[i];
-      const std::string entity = path + "/" + (shape.name.empty() ? "shape " + std::to_string(i) : shape.name);
+      const std::string entity =
+          path + "/" + (display_name(shape).empty() ? "shape " + std::to_string(i) : display_name(shape));
       if (const auto* trimmed = std::get_if<TrimmedSurface>(&shape.geometry)) {
         faces.emplace_back(trimmed_surface_to_face(*trimmed, entity, 0.1 * tolerance_), &shape);
       } else if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry)) {
         for (const auto& f : mesh_faces(*mesh)) faces.emplace_back(f, &shape);
+      } else if (const auto* polygons = std::get_if<PolygonMesh>(&shape.geometry)) {
+        for (const auto& f : mesh_faces(triangulated(*polygons))) faces.emplace_back(f, &shape);
       } else {
         const auto& curve = std::get<NurbsCurve>(shape.geometry);
         BRepBuilderAPI_MakeEdge edge(to_occt_curve(curve, entity));
@@ -206,11 +191,7 @@ class XcafWriter {
 }  // namespace
 
 Handle(TDocStd_Document) scene_to_xcaf(const Scene& input, bool face_names) {
-  Scene scene = input;
-  if (scene.unit.millimetres != 1.0) {
-    scale_node(scene.root, scene.unit.millimetres);
-    scene.unit = LengthUnit{};
-  }
+  const Scene scene = in_unit(input, LengthUnit{});
   const auto box = scene_bounding_box(scene);
   const double diagonal = box.isEmpty() ? 0.0 : box.diagonal().norm();
   Handle(TDocStd_Document) document;

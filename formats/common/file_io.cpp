@@ -1,12 +1,12 @@
 #include "formats/common/file_io.hpp"
 
+#include <unistd.h>
+
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 namespace cadnurbs {
 
@@ -19,24 +19,31 @@ std::string read_file(const std::string& path) {
   return buffer.str();
 }
 
+void write_file_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
+  const std::string temporary = path + ".tmp" + std::to_string(::getpid());
+  std::error_code ignored;
+  try {
+    write(temporary);
+  } catch (...) {
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::filesystem::remove(temporary, ignored);
+    throw FileError(path + ": cannot write (" + error.message() + ")");
+  }
+}
+
 void write_file_atomically(const std::string& path, const std::string& bytes) {
-  const std::string temp = path + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+  write_file_atomically(path, [&](const std::string& temporary) {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) throw FileError(path + ": cannot write (" + std::strerror(errno) + ")");
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.flush();
-    if (!out) {
-      std::remove(temp.c_str());
-      throw FileError(path + ": write failed");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  if (ec) {
-    std::remove(temp.c_str());
-    throw FileError(path + ": cannot write (" + ec.message() + ")");
-  }
+    if (!out) throw FileError(path + ": write failed");
+  });
 }
 
 std::string file_extension(const std::string& path) {

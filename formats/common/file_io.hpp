@@ -1,5 +1,6 @@
 #pragma once
 // Whole-file reading and atomic writing shared by every format.
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -18,6 +19,11 @@ std::string read_file(const std::string& path);
 // Writes `bytes` to a temporary file beside `path` and renames it over `path`, so an interrupted
 // run never leaves a truncated output. Throws FileError on failure (the temporary is removed).
 void write_file_atomically(const std::string& path, const std::string& bytes);
+
+// The same for writers that can only write by path (OCCT's): calls write(temporary) with
+// temporary = "<path>.tmp<process id>", then renames it to `path`. Whatever `write` throws is passed
+// on after the temporary is removed; a failed rename throws FileError "<path>: cannot write (<reason>)".
+void write_file_atomically(const std::string& path, const std::function<void(const std::string& temporary)>& write);
 
 // Lower-case extension with the dot (".wrl"), or "" when there is none.
 std::string file_extension(const std::string& path);

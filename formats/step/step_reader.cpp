@@ -19,8 +19,8 @@
 #include <filesystem>
 #include <optional>
 
-#include "formats/brep/length_unit_name.hpp"
-#include "formats/brep/file_probe.hpp"
+#include "core/length_unit.hpp"
+#include "formats/common/file_probe.hpp"
 #include "formats/brep/occt_errors.hpp"
 #include "formats/brep/occt_setup.hpp"
 #include "formats/brep/reader_plumbing.hpp"

@@ -16,7 +16,6 @@
 #include "formats/brep/occt_setup.hpp"
 #include "formats/brep/output_time_stamp.hpp"
 #include "formats/brep/scene_to_xcaf.hpp"
-#include "formats/brep/write_through_temporary.hpp"
 #include "formats/common/file_io.hpp"
 
 namespace cadnurbs {
@@ -38,7 +37,7 @@ void write_step(const std::string& path, const Scene& scene) {
     ~Closer() { XCAFApp_Application::GetApplication()->Close(document); }
   } closer{document};
 
-  write_through_temporary(path, [&](const std::string& temporary) {
+  write_file_atomically(path, [&](const std::string& temporary) {
     try {
       OCC_CATCH_SIGNALS
       STEPCAFControl_Writer writer;

@@ -92,7 +92,7 @@ std::string proto_declarations(const NodeDocument& document, const ClassicEncodi
 
 class ClassicWriter {
  public:
-  explicit ClassicWriter(std::string& out) : out_(out) {}
+  ClassicWriter(std::string& out, bool pretty) : out_(out), pretty_(pretty) {}
 
   void node_statement(const NodePtr& node, int depth) {
     if (!node) {
@@ -110,7 +110,7 @@ class ClassicWriter {
     out_ += node->type;
     if (node->fields.empty()) {
       out_ += " {}";
-    } else if (fits_one_line(*node)) {
+    } else if (!pretty_ || fits_one_line(*node)) {
       out_ += " {";
       for (const auto& field : node->fields) {
         out_ += " " + field.name + " ";
@@ -177,9 +177,12 @@ class ClassicWriter {
     }
   }
 
-  void indent(int depth) { out_.append(static_cast<size_t>(depth), ' '); }
+  void indent(int depth) {
+    if (pretty_) out_.append(static_cast<size_t>(depth), ' ');
+  }
 
   std::string& out_;
+  bool pretty_;
   std::set<const Node*> written_;
 };
 
@@ -199,7 +202,7 @@ std::string classic_encoding(const NodeDocument& document, const ClassicEncoding
   } else {
     out += "#X3D V3.3 utf8\nPROFILE Interchange\nCOMPONENT NURBS:4\n";
   }
-  ClassicWriter writer(out);
+  ClassicWriter writer(out, options.pretty);
   for (const auto& root : document.roots) {
     writer.node_statement(root, 0);
     out += "\n";

@@ -172,6 +172,22 @@ NodePtr mesh_node(const TriangleMesh& mesh, VrmlDialect dialect, const GeometryP
   return node;
 }
 
+// Exact planar faces: convex polygons sharing vertices. No normals: creaseAngle 0 (the default) shades
+// every polygon flat, which is what a plane is.
+NodePtr polygon_mesh_node(const PolygonMesh& mesh, VrmlDialect dialect, const GeometryPrecision& p) {
+  auto node = make_node("IndexedFaceSet");
+  node->set("coord", SFNode{coordinate_node(dialect, mesh.positions, with_digits(p.coordinate_tolerance, p))});
+  MFInt32 indices;
+  for (const auto& polygon : mesh.polygons) {
+    indices.values.insert(indices.values.end(), polygon.begin(), polygon.end());
+    indices.values.push_back(-1);
+  }
+  if (!indices.values.empty()) indices.values.pop_back();  // the last face needs no terminator
+  node->set("coordIndex", std::move(indices));
+  node->set("solid", false);
+  return node;
+}
+
 }  // namespace
 
 NumberPrecision knot_precision(const std::vector<double>& knots, double tolerance, int significant_digits) {
@@ -196,6 +212,7 @@ NumberPrecision knot_precision(const std::vector<double>& knots, double toleranc
 NodePtr geometry_node(const Geometry& geometry, VrmlDialect dialect, const GeometryPrecision& precision) {
   if (const auto* trimmed = std::get_if<TrimmedSurface>(&geometry)) return surface_node(*trimmed, dialect, precision);
   if (const auto* curve = std::get_if<NurbsCurve>(&geometry)) return curve_node(*curve, dialect, precision);
+  if (const auto* polygons = std::get_if<PolygonMesh>(&geometry)) return polygon_mesh_node(*polygons, dialect, precision);
   return mesh_node(std::get<TriangleMesh>(geometry), dialect, precision);
 }
 

@@ -7,7 +7,8 @@
 //           NurbsCurve2D | ContourPolyline2D), NurbsCurve, IndexedFaceSet; controlPoint and coord as
 //           Coordinate, or CoordinateDouble when the precision asked for is finer than single precision.
 // Weights are written only for rational entities whose weights are not all 1. Mesh vertices are written
-// within τ, unit normals within 1e-3 (shading only; 0.06°), equal normals once.
+// within τ, unit normals within 1e-3 (shading only; 0.06°), equal normals once. A PolygonMesh is an
+// IndexedFaceSet of its polygons (convex, flat-shaded: no normals, creaseAngle 0).
 #include "core/scene.hpp"
 #include "formats/vrml/x3d_node.hpp"
 

@@ -5,6 +5,7 @@
 #include "formats/vrml/parse_error.hpp"
 #include "formats/vrml/nodes_to_geometry.hpp"
 #include "formats/vrml/transform_fields.hpp"
+#include "formats/vrml/vrml_identifier.hpp"
 #include "formats/vrml/world_info.hpp"
 
 namespace cadnurbs {
@@ -68,7 +69,8 @@ class SceneBuilder {
 
   std::string name_of(const Node& node) const {
     auto it = conventions_.names.find(node.def_name);
-    return it != conventions_.names.end() ? it->second : node.def_name;
+    if (it != conventions_.names.end()) return it->second;
+    return is_generated_identifier(node.def_name) ? std::string() : node.def_name;
   }
 
   // A USE is a copy in the Scene: nested USEs multiply; stop a file that multiplies without bound.
@@ -91,8 +93,9 @@ class SceneBuilder {
   }
 
   void add_child(SceneNode& parent, const Node& child, std::vector<Ancestor>& ancestors) {
-    // An unnamed NurbsGroup only gathers the NURBS shapes of its parent (as the writer makes it).
-    if (child.type == "NurbsGroup" && child.def_name.empty()) {
+    // An unnamed NurbsGroup only gathers the NURBS shapes of its parent (as the writer makes it; a
+    // generated DEF, "_<n>", names nothing).
+    if (child.type == "NurbsGroup" && (child.def_name.empty() || is_generated_identifier(child.def_name))) {
       if (const auto* children = child.get<MFNode>("children"))
         for (const auto& grandchild : children->nodes)
           if (grandchild) add_child(parent, *grandchild, ancestors);

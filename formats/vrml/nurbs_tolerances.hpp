@@ -15,7 +15,7 @@
 // Weights are never written less precisely than w_min/100. Trimming curves live in the surface's (u,v)
 // domain: they get a parameter tolerance τ/(2·L), L the derivative bound below, and then the same rules.
 #include "core/nurbs_curve.hpp"
-#include "core/nurbs_surface.hpp"
+#include "core/nurbs_surface.hpp"  // surface_derivative_bound, trim_parameter_tolerance
 
 namespace cadnurbs {
 
@@ -30,11 +30,6 @@ struct NurbsTolerances {
 NurbsTolerances surface_tolerances(const NurbsSurface& surface, double coordinate_tolerance, bool homogeneous);
 NurbsTolerances curve_tolerances(const NurbsCurve& curve, double coordinate_tolerance, bool homogeneous);
 
-// L = bound on |∂S/∂u| and |∂S/∂v| from the control net: max over rows and columns of
-// (k-1)·|P_{i+1} - P_i| / (t_{i+k} - t_{i+1}), times (w_max/w_min)^2 for rational surfaces.
-double surface_derivative_bound(const NurbsSurface& surface);
-
-// Tolerance in (u,v) for trimming curves of `surface`: τ/(2·L), at most 1/1000 of the domain's size.
-double trim_parameter_tolerance(const NurbsSurface& surface, double coordinate_tolerance);
+// The derivative bound L and trim_parameter_tolerance live in core/nurbs_surface.hpp.
 
 }  // namespace cadnurbs

@@ -7,6 +7,7 @@
 #include "core/bounding_box.hpp"
 #include "core/geometry_error.hpp"
 #include "formats/vrml/geometry_to_nodes.hpp"
+#include "formats/vrml/share_repeated_nodes.hpp"
 #include "formats/vrml/transform_fields.hpp"
 #include "formats/vrml/vrml_identifier.hpp"
 #include "formats/vrml/world_info.hpp"
@@ -44,6 +45,7 @@ class SceneMapper {
     NodeDocument document;
     document.dialect = dialect_;
     document.roots = {world_info(), navigation_info(), viewpoint(), root};
+    share_repeated_nodes(document, ids_);
     return document;
   }
 
@@ -58,7 +60,8 @@ class SceneMapper {
 
   std::string claim(const std::string& wanted, const std::string& original) {
     std::string def = ids_.claim(wanted);
-    if (def != original) renamed_.emplace_back(def, original);
+    // A scene name that looks like a generated DEF ("_12") must be declared, or a reader drops it.
+    if (def != original || is_generated_identifier(def)) renamed_.emplace_back(def, original);
     return def;
   }
 

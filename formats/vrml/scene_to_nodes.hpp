@@ -13,7 +13,9 @@
 //     "<nodeDEF>_line_colour"), written once and USE'd after, which is how a reader finds the node's
 //     colour again;
 //   - no colour anywhere: Material {} (surfaces, meshes), no Appearance (curves).
-// A node colour that no shape inherits has no effect and is not written.
+// A node colour that no shape inherits has no effect and is not written. Then repeated pieces are written
+// once and USE'd (share_repeated_nodes.hpp): equal Appearances, equal shapes, the equal contents of
+// instances.
 // Precision besides the geometry's: translations within τ (in the parent's units), rotation axes and
 // angles within τ/(4R) and scale factors within τ·s/(4R), R the largest distance from the node's origin
 // to a corner of the scene's box (first-order estimates); colours within 1/512; the Viewpoint within

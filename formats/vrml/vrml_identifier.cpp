@@ -42,6 +42,21 @@ std::string sanitised_identifier(const std::string& name) {
   return out;
 }
 
+bool is_generated_identifier(const std::string& identifier) {
+  if (identifier.size() < 2 || identifier[0] != '_') return false;
+  for (size_t i = 1; i < identifier.size(); ++i)
+    if (identifier[i] < '0' || identifier[i] > '9') return false;
+  return true;
+}
+
+std::string IdentifierRegistry::claim_generated() {
+  std::string candidate;
+  do candidate = "_" + std::to_string(++generated_);
+  while (taken_.count(candidate) != 0);
+  taken_.insert(candidate);
+  return candidate;
+}
+
 std::string IdentifierRegistry::claim(const std::string& wanted) {
   const std::string base = sanitised_identifier(wanted);
   std::string candidate = base;

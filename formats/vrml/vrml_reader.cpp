@@ -1,16 +1,18 @@
 #include "formats/vrml/vrml_reader.hpp"
 
 #include "formats/common/file_io.hpp"
+#include "formats/common/gzip.hpp"
 #include "formats/vrml/classic_parser.hpp"
 #include "formats/vrml/nodes_to_scene.hpp"
 #include "formats/vrml/xml_parser.hpp"
 
 namespace cadnurbs {
 
-Scene parse_vrml(const std::string& text, const std::string& name_for_errors, bool homogeneous_control_points) {
+Scene parse_vrml(const std::string& bytes, const std::string& name_for_errors, bool homogeneous_control_points) {
+  // .wrz, .wrl.gz, .x3dvz, .x3dz, or any of the plain names holding gzip'd text, as browsers accept.
+  const std::string unpacked = is_gzip(bytes) ? gunzip(bytes, name_for_errors) : std::string();
+  const std::string& text = is_gzip(bytes) ? unpacked : bytes;
   size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
-  if (text.size() >= 2 && static_cast<unsigned char>(text[0]) == 0x1F && static_cast<unsigned char>(text[1]) == 0x8B)
-    throw FileError(name_for_errors + ": line 1: gzip-compressed; unpack it first");
   const size_t first = text.find_first_not_of(" \t\r\n", start);
   NodeDocument document;
   if (first != std::string::npos && text[first] == '<') document = parse_xml(text, name_for_errors);

@@ -9,10 +9,11 @@
 
 namespace cadnurbs {
 
-// Scene from file text. `homogeneous_control_points`: controlPoint holds w·P (the default and what the
+// Scene from the file's bytes: text, or gzip'd text (told apart by content). `homogeneous_control_points`: controlPoint holds w·P (the default and what the
 // viewers assume) or P; a cadnurbs "controlPoint ..." WorldInfo line in the file overrides it.
-// Throws FileError "<name_for_errors>: line N: <reason>".
-Scene parse_vrml(const std::string& text, const std::string& name_for_errors, bool homogeneous_control_points = true);
+// Throws FileError "<name_for_errors>: line N: <reason>", or "<name_for_errors>: <reason>" for damaged
+// gzip data.
+Scene parse_vrml(const std::string& bytes, const std::string& name_for_errors, bool homogeneous_control_points = true);
 
 // parse_vrml of the file at `path`; also throws FileError when it cannot be read.
 Scene read_vrml(const std::string& path, bool homogeneous_control_points = true);

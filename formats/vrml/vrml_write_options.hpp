@@ -28,9 +28,15 @@ struct VrmlWriteOptions {
   std::optional<Viewpoint> viewpoint;
   // WorldInfo title; empty: the root node's name, if any.
   std::string title;
+  // Indented, one field per line (for people); false: the fewest bytes (for machines and the web).
+  bool pretty = false;
+  // write_vrml: the file gzip'd (.wrz, .x3dvz, .x3dz), as browsers read it.
+  bool gzipped = false;
 };
 
 // VRML97 for .wrl, X3D for both X3D encodings.
-VrmlDialect dialect_of(VrmlEncoding encoding);
+inline VrmlDialect dialect_of(VrmlEncoding encoding) {
+  return encoding == VrmlEncoding::vrml97 ? VrmlDialect::vrml97 : VrmlDialect::x3d;
+}
 
 }  // namespace cadnurbs

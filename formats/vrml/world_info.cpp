@@ -1,35 +1,18 @@
 #include "formats/vrml/world_info.hpp"
 
-#include <array>
 #include <charconv>
 #include <sstream>
 #include <stdexcept>
 
-#include "formats/vrml/number_format.hpp"
+#include "core/length_unit.hpp"
+#include "core/number_format.hpp"
 
 namespace cadnurbs {
 
 namespace {
 
-struct KnownUnit {
-  const char* name;
-  double millimetres;
-};
-
-constexpr std::array<KnownUnit, 10> known_units = {{{"mm", 1.0},
-                                                    {"cm", 10.0},
-                                                    {"dm", 100.0},
-                                                    {"m", 1000.0},
-                                                    {"km", 1e6},
-                                                    {"um", 1e-3},
-                                                    {"in", 25.4},
-                                                    {"inch", 25.4},
-                                                    {"ft", 304.8},
-                                                    {"foot", 304.8}}};
-
 std::optional<double> known_size(const std::string& name) {
-  for (const auto& u : known_units)
-    if (name == u.name) return u.millimetres;
+  if (const auto unit = length_unit_named(name)) return unit->millimetres;
   return std::nullopt;
 }
 

@@ -4,7 +4,9 @@
 //   "unit mm"                       (unknown names carry their size: "unit furlong 201168")
 //   "controlPoint homogeneous"      or "controlPoint euclidean"
 //   "name <DEF> <original name>"    one per DEF that is not the node's or shape's own name (names that
-//                                   had to be sanitised or made unique; nothing after the DEF: no name)
+//                                   had to be sanitised or made unique; nothing after the DEF: no name).
+//                                   DEFs of the form "_<digits>" are the writer's own (shared nodes) and
+//                                   name nothing, unless such a line says otherwise.
 // Other strings are ignored, so files from other tools keep their notes.
 #include <map>
 #include <optional>

@@ -8,7 +8,7 @@
 #include <variant>
 #include <vector>
 
-#include "formats/vrml/number_format.hpp"
+#include "core/number_format.hpp"
 
 namespace cadnurbs {
 

@@ -12,7 +12,7 @@ namespace {
 
 class XmlWriter {
  public:
-  explicit XmlWriter(std::string& out) : out_(out) {}
+  XmlWriter(std::string& out, bool pretty) : out_(out), pretty_(pretty) {}
 
   void element(const NodePtr& node, const std::string& container_field, int depth) {
     if (!node) return;  // NULL: the field keeps its default
@@ -73,9 +73,12 @@ class XmlWriter {
     }
   }
 
-  void indent(int depth) { out_.append(static_cast<size_t>(depth), ' '); }
+  void indent(int depth) {
+    if (pretty_) out_.append(static_cast<size_t>(depth), ' ');
+  }
 
   std::string& out_;
+  bool pretty_;
   std::set<const Node*> written_;
 };
 
@@ -98,7 +101,7 @@ std::string xml_escaped(const std::string& text) {
   return out;
 }
 
-std::string xml_encoding(const NodeDocument& document) {
+std::string xml_encoding(const NodeDocument& document, bool pretty) {
   if (document.dialect != VrmlDialect::x3d)
     throw std::invalid_argument("the VRML97 NURBS nodes have no X3D XML encoding");
   std::string out =
@@ -108,7 +111,7 @@ std::string xml_encoding(const NodeDocument& document) {
       "<component name='NURBS' level='4'/>\n"
       "</head>\n"
       "<Scene>\n";
-  XmlWriter writer(out);
+  XmlWriter writer(out, pretty);
   for (const auto& root : document.roots) writer.element(root, "", 0);
   out += "</Scene>\n</X3D>\n";
   return out;

@@ -257,7 +257,7 @@ TEST(FaceConversion, BrokenFaceBecomesAReportedMesh) {
   EXPECT_FALSE(t.fallbacks[0].reason.empty());
   EXPECT_EQ(t.fallbacks[0].reason.find('\n'), std::string::npos);
   ASSERT_EQ(t.scene.root.shapes.size(), 1u);
-  EXPECT_EQ(t.scene.root.shapes[0].name, "face 1 (mesh)");
+  EXPECT_EQ(t.scene.root.shapes[0].source_entity, "face 1 (mesh)");
   EXPECT_TRUE(std::holds_alternative<TriangleMesh>(t.scene.root.shapes[0].geometry));
   std::printf("fallback reason: %s\n", t.fallbacks[0].reason.c_str());
 }

@@ -5,7 +5,7 @@
 
 #include "core/bounding_box.hpp"
 #include "corpus_manifest.hpp"
-#include "formats/brep/length_unit_name.hpp"
+#include "core/length_unit.hpp"
 #include "formats/iges/iges_reader.hpp"
 #include "formats/step/step_reader.hpp"
 
@@ -45,7 +45,7 @@ TEST(XcafStructure, AssemblyNamesTransformsAndColours) {
   int faces = 0;
   for_each_shape(t.scene, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
     ++faces;
-    EXPECT_EQ(shape.name.rfind("face ", 0), 0u) << shape.name;
+    EXPECT_EQ(shape.source_entity.rfind("face ", 0), 0u) << shape.source_entity;
   });
   EXPECT_EQ(faces, 160);
 }

@@ -93,7 +93,7 @@ TEST_F(Cli, TruncatedStlFailsWithTheTriangleAndWritesNothing) {
 TEST_F(Cli, UnknownOptionIsAUsageError) {
   const CommandResult r = run("convert a.stl -o b.wrl --colour red");
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "cadnurbs convert: convert: unknown option '--colour' (see cadnurbs convert --help)\n");
+  EXPECT_EQ(r.err, "cadnurbs convert: unknown option '--colour' (see cadnurbs convert --help)\n");
 }
 
 TEST_F(Cli, OutputNeverOverwritesTheInput) {
@@ -150,4 +150,64 @@ TEST_F(Cli, InfoNamesSourceSurfaceTypesAndIntegratesTheTrimmedArea) {
   ASSERT_NE(at, std::string::npos);
   EXPECT_NEAR(std::stod(r.out.substr(at + 12)), 1929.332, 1929.332 * 1e-3);
   EXPECT_NE(r.out.find("unit: mm (source file: mm)"), std::string::npos);
+}
+
+TEST_F(Cli, HelpExitsZeroAndNamesEveryConvertOption) {
+  const CommandResult r = run("--help");
+  EXPECT_EQ(r.status, 0);
+  for (const char* option : {"--deviation", "--exact-nurbs", "--units", "--pretty"})
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+  EXPECT_EQ(run("").status, 2);
+}
+
+TEST_F(Cli, CompactOutputIsSmallerThanExactNurbsAndGzipFormsReadBack) {
+  const std::string step = std::string(CADNURBS_SHARED_DIR) + "/corpus/step/featuretype.STEP";
+  const CommandResult compact = run("convert " + step + " -o " + path("part.x3dv"));
+  ASSERT_EQ(compact.status, 0) << compact.err;
+  EXPECT_NE(compact.out.find("planar faces as exact polygons"), std::string::npos) << compact.out;
+  ASSERT_EQ(run("convert " + step + " --exact-nurbs -o " + path("exact.x3dv")).status, 0);
+  const std::string exact = read_file(path("exact.x3dv"));
+  EXPECT_EQ(exact.find("IndexedFaceSet"), std::string::npos);  // every face a NURBS, as in the source
+  EXPECT_LT(fs::file_size(path("part.x3dv")), fs::file_size(path("exact.x3dv")) / 2);
+  // gzip'd outputs hold the same text; every form reads back with the same area.
+  const auto total_area = [&](const std::string& file) {
+    const CommandResult info = run("info " + file);
+    EXPECT_EQ(info.status, 0) << info.err;
+    return std::stod(info.out.substr(info.out.find("total area: ") + 12));
+  };
+  const double area = total_area(path("part.x3dv"));
+  EXPECT_NEAR(total_area(path("exact.x3dv")), area, 1e-6 * area);
+  for (const char* ext : {".x3dvz", ".wrz", ".x3dz", ".wrl.gz"}) {
+    ASSERT_EQ(run("convert " + step + " -o " + path(std::string("part") + ext)).status, 0) << ext;
+    const std::string bytes = read_file(path(std::string("part") + ext));
+    ASSERT_GE(bytes.size(), 2u);
+    EXPECT_EQ(static_cast<unsigned char>(bytes[0]), 0x1f) << ext;
+    EXPECT_NEAR(total_area(path(std::string("part") + ext)), area, 1e-6 * area) << ext;
+  }
+  EXPECT_TRUE(fs::exists(path("cadnurbs-nurbs-protos.wrl")));  // beside the .wrz
+}
+
+TEST_F(Cli, UnitsScaleTheOutputAndAreRecorded) {
+  const std::string step = std::string(CADNURBS_SHARED_DIR) + "/corpus/step/screw.step";
+  ASSERT_EQ(run("convert " + step + " -o " + path("mm.x3dv")).status, 0);
+  ASSERT_EQ(run("convert " + step + " --units kicad -o " + path("kicad.x3dv")).status, 0);
+  EXPECT_NE(read_file(path("kicad.x3dv")).find("\"unit kicad\""), std::string::npos);
+  const CommandResult mm = run("info " + path("mm.x3dv")), kicad = run("info " + path("kicad.x3dv"));
+  const double mm_area = std::stod(mm.out.substr(mm.out.find("total area: ") + 12));
+  const double kicad_area = std::stod(kicad.out.substr(kicad.out.find("total area: ") + 12));
+  EXPECT_NEAR(kicad_area * 2.54 * 2.54, mm_area, 1e-5 * mm_area);
+  EXPECT_NE(kicad.out.find("unit: kicad"), std::string::npos) << kicad.out;
+  const CommandResult bad = run("convert " + step + " --units furlong -o " + path("f.x3dv"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(bad.err, "cadnurbs convert: --units: unknown unit 'furlong' (mm, cm, m, in, kicad)\n");
+}
+
+TEST_F(Cli, MeshesGoToObjAndTheTessellationIsReported) {
+  const std::string step = std::string(CADNURBS_SHARED_DIR) + "/corpus/step/screw.step";
+  const CommandResult r = run("convert " + step + " --deviation 0.1 -o " + path("screw.obj"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("0 uncertified triangles, 0 unshared edge uses"), std::string::npos) << r.out;
+  const std::string obj = read_file(path("screw.obj"));
+  EXPECT_EQ(obj.rfind("# cadnurbs", 0), 0u);
+  EXPECT_GT(std::count(obj.begin(), obj.end(), 'f'), 100);
 }

@@ -2,7 +2,7 @@
 // within the precision the writer promises (1e-6 of the bounding-box diagonal).
 #include <gtest/gtest.h>
 
-#include "converters/scene_io.hpp"
+#include "converters/file_formats.hpp"
 #include "formats/common/file_io.hpp"
 #include "core/bounding_box.hpp"
 #include "samples/capping_shapes.hpp"

@@ -1,8 +1,16 @@
 #pragma once
 // Scenes built by hand for the VRML tests, each exercising one part of the mapping.
 #include "core/scene.hpp"
+#include "formats/vrml/vrml_write_options.hpp"
 
 namespace cadnurbs::vrml_test {
+
+// Default writer options with the given encoding.
+inline VrmlWriteOptions with_encoding(VrmlEncoding encoding) {
+  VrmlWriteOptions o;
+  o.encoding = encoding;
+  return o;
+}
 
 // Quarter of a cylinder of radius 10 about Z, height 20: rational quadratic in u (middle weight
 // cos 45°), linear in v.

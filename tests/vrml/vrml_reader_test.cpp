@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "formats/common/file_io.hpp"
+#include "formats/common/gzip.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 
 namespace cadnurbs {
@@ -131,8 +132,22 @@ TEST(VrmlReader, XmlEntitiesContainerFieldsAndUse) {
   EXPECT_EQ(std::get<TriangleMesh>(scene.root.shapes[1].geometry).positions.size(), 4u);
 }
 
-TEST(VrmlReader, RefusesCompressedFiles) {
-  EXPECT_EQ(error_of(std::string("\x1f\x8b\x08\x00", 4)), "t.x3dv: line 1: gzip-compressed; unpack it first");
+TEST(VrmlReader, ReadsGzippedText) {
+  const std::string text =
+      "#X3D V3.3 utf8\nPROFILE Interchange\nDEF Box_part Transform { translation 1 2 3 children [\n"
+      " Shape { geometry IndexedFaceSet { coordIndex [0 1 2 -1] coord Coordinate { point [0 0 0 1 0 0 0 1 0] } } }\n"
+      "] }\n";
+  const Scene scene = parse_vrml(gzip(text), "t.x3dvz");
+  EXPECT_EQ(scene.root.name, "Box_part");
+  EXPECT_EQ(scene.root.transform.translation(), Eigen::Vector3d(1, 2, 3));
+  ASSERT_EQ(scene.root.shapes.size(), 1u);
+  EXPECT_EQ(std::get<TriangleMesh>(scene.root.shapes[0].geometry).triangles.size(), 1u);
+}
+
+TEST(VrmlReader, RefusesDamagedGzipData) {
+  EXPECT_EQ(error_of(std::string("\x1f\x8b\x08\x00", 4)), "t.x3dv: damaged or truncated gzip data");
+  const std::string packed = gzip("#X3D V3.3 utf8\nGroup {}\n");
+  EXPECT_EQ(error_of(packed.substr(0, packed.size() - 6)), "t.x3dv: damaged or truncated gzip data");
 }
 
 }  // namespace

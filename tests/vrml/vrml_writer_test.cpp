@@ -21,11 +21,7 @@
 namespace cadnurbs {
 namespace {
 
-VrmlWriteOptions with_encoding(VrmlEncoding encoding) {
-  VrmlWriteOptions o;
-  o.encoding = encoding;
-  return o;
-}
+using vrml_test::with_encoding;
 
 std::set<std::string> externproto_names(const std::string& text) {
   std::set<std::string> names;
@@ -33,15 +29,6 @@ std::set<std::string> externproto_names(const std::string& text) {
   for (std::string line; std::getline(in, line);)
     if (line.rfind("EXTERNPROTO ", 0) == 0) names.insert(line.substr(12, line.find(' ', 12) - 12));
   return names;
-}
-
-TEST(VrmlWriter, EncodingFollowsTheExtension) {
-  EXPECT_EQ(encoding_for_extension(".wrl"), VrmlEncoding::vrml97);
-  EXPECT_EQ(encoding_for_extension("WRL"), VrmlEncoding::vrml97);
-  EXPECT_EQ(encoding_for_extension(".x3dv"), VrmlEncoding::x3d_classic);
-  EXPECT_EQ(encoding_for_extension(".X3D"), VrmlEncoding::x3d_xml);
-  EXPECT_EQ(encoding_for_extension(".stl"), std::nullopt);
-  EXPECT_EQ(encoding_for_extension(""), std::nullopt);
 }
 
 TEST(VrmlWriter, HeadersOfTheThreeEncodings) {

@@ -1,6 +1,5 @@
 #pragma once
 // A look at the first and last bytes of a file, for cheap format checks before a reader parses it all.
-// No OCCT types.
 #include <cstddef>
 #include <string>
 

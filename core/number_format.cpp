@@ -1,4 +1,4 @@
-#include "formats/vrml/number_format.hpp"
+#include "core/number_format.hpp"
 
 #include <charconv>
 #include <cmath>

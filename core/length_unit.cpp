@@ -1,4 +1,4 @@
-#include "formats/brep/length_unit_name.hpp"
+#include "core/length_unit.hpp"
 
 #include <algorithm>
 #include <array>
@@ -14,7 +14,7 @@ struct Spelling {
   double millimetres;
 };
 
-constexpr std::array<Spelling, 33> spellings = {{
+constexpr std::array<Spelling, 37> spellings = {{
     {"mm", "mm", 1.0},           {"millimetre", "mm", 1.0},     {"millimeter", "mm", 1.0},
     {"cm", "cm", 10.0},          {"centimetre", "cm", 10.0},    {"centimeter", "cm", 10.0},
     {"m", "m", 1000.0},          {"metre", "m", 1000.0},        {"meter", "m", 1000.0},
@@ -26,7 +26,23 @@ constexpr std::array<Spelling, 33> spellings = {{
     {"foot", "ft", 304.8},       {"feet", "ft", 304.8},         {"mil", "mil", 0.0254},
     {"mils", "mil", 0.0254},     {"uin", "uin", 2.54e-5},       {"microinch", "uin", 2.54e-5},
     {"mi", "mi", 1609344.0},     {"mile", "mi", 1609344.0},     {"miles", "mi", 1609344.0},
+    {"dm", "dm", 100.0},         {"decimetre", "dm", 100.0},    {"decimeter", "dm", 100.0},
+    {"kicad", "kicad", 2.54},
 }};
+
+void scale_lengths(SceneNode& node, double factor) {
+  node.transform.translation() *= factor;
+  for (auto& shape : node.shapes) {
+    if (auto* trimmed = std::get_if<TrimmedSurface>(&shape.geometry)) {
+      for (auto& p : trimmed->surface.points) p *= factor;
+    } else if (auto* curve = std::get_if<NurbsCurve>(&shape.geometry)) {
+      for (auto& p : curve->points) p *= factor;
+    } else if (auto* mesh = std::get_if<TriangleMesh>(&shape.geometry)) {
+      for (auto& p : mesh->positions) p *= factor;
+    }
+  }
+  for (auto& child : node.children) scale_lengths(child, factor);
+}
 
 }  // namespace
 
@@ -37,6 +53,12 @@ std::optional<LengthUnit> length_unit_named(const std::string& name) {
   for (const auto& s : spellings)
     if (key == s.spelling) return LengthUnit{s.name, s.millimetres};
   return std::nullopt;
+}
+
+Scene in_unit(Scene scene, const LengthUnit& unit) {
+  if (scene.unit.millimetres != unit.millimetres) scale_lengths(scene.root, scene.unit.millimetres / unit.millimetres);
+  scene.unit = unit;
+  return scene;
 }
 
 }  // namespace cadnurbs

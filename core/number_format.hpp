@@ -1,6 +1,7 @@
 #pragma once
-// Numbers as VRML/X3D text with the fewest characters that keep them within a stated precision,
-// because file size is what the project measures.
+// Numbers as text with the fewest characters that keep them within a stated precision, because file
+// size is what the project measures: the VRML/X3D writers write them, the compaction weighs its choices
+// by them.
 #include <string>
 
 namespace cadnurbs {

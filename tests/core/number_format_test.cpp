@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "formats/vrml/number_format.hpp"
+#include "core/number_format.hpp"
 
 namespace cadnurbs {
 namespace {

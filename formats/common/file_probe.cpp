@@ -1,4 +1,4 @@
-#include "formats/brep/file_probe.hpp"
+#include "formats/common/file_probe.hpp"
 
 #include <cerrno>
 #include <cstring>

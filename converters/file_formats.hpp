@@ -1,0 +1,61 @@
+#pragma once
+// The one table from file-name extensions to the readers and writers in formats/. convert, info,
+// capping and demo look formats up here, and their help texts print the lists made from it.
+#include <string>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "formats/brep/brep_translation.hpp"
+#include "formats/vrml/vrml_write_options.hpp"
+
+namespace cadnurbs {
+
+// How a scene is written; each writer uses the fields that concern it.
+struct SceneWriteOptions {
+  bool homogeneous_control_points = true;
+  int significant_digits = 0;   // 0: automatic (fewest digits within the tolerance)
+  bool self_contained = false;  // VRML97: paste the NURBS PROTOs instead of EXTERNPROTO
+  bool pretty = false;          // VRML/X3D: indent nodes, one field per line
+  std::optional<Viewpoint> viewpoint;
+  std::string title;
+};
+
+struct FileFormat {
+  std::string name;                     // "X3D classic, gzip'd"
+  std::vector<std::string> extensions;  // lower case with the dot; the first is the usual one
+  bool meshes_only = false;             // holds triangles only: NURBS must be tessellated first
+  bool compact = false;                 // VRML/X3D NURBS output: gets the compact, exact rewrites
+  bool in_samples = false;              // the bundled samples (samples/, `capping`) come in it
+  // null when the format is not read / not written. Readers return what they read (the B-rep
+  // readers' account of fallen-back faces included); writers write atomically.
+  BrepTranslation (*read)(const std::string& path, bool homogeneous_control_points) = nullptr;
+  void (*write)(const std::string& path, const Scene& scene, const SceneWriteOptions& options) = nullptr;
+};
+
+// Every format, inputs and outputs.
+const std::vector<FileFormat>& file_formats();
+
+// The format whose extension ends `path` (case-insensitive; the longest match wins, so ".wrl.gz" beats
+// ".gz"), or null.
+const FileFormat* format_of(const std::string& path);
+
+// The format that reads (or writes) `path`. Throws FileError "<path>: unknown input format '<ext>'
+// (expected .step, ...)" naming the extensions that would do.
+const FileFormat& input_format(const std::string& path);
+const FileFormat& output_format(const std::string& path);
+
+// "a, b, c" of every extension that is read (inputs) or written (outputs).
+std::string extension_list(bool inputs);
+
+// input_format(path).read: the scene and, from STEP/IGES, the faces that fell back to meshes. Throws
+// FileError/GeometryError with a one-line message.
+BrepTranslation load_scene(const std::string& path, bool homogeneous_control_points = true);
+
+// load_scene(...).scene.
+Scene read_scene(const std::string& path, bool homogeneous_control_points = true);
+
+// output_format(path).write. Formats that hold meshes only refuse NURBS (tessellate first). For a VRML97
+// file that is not self-contained, also writes the PROTO library beside it when it is missing.
+void write_scene(const std::string& path, const Scene& scene, const SceneWriteOptions& options);
+
+}  // namespace cadnurbs
