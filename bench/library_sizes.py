@@ -120,6 +120,17 @@ def parse_faces(stdout):
     return None, None
 
 
+def parse_fallback_reasons(stderr):
+    """convert's "... face K (TYPE) written as a mesh: REASON" lines, as "TYPE: REASON xN; ..."."""
+    counts = {}
+    for line in stderr.splitlines():
+        m = re.search(r"\(([^()]*)\)\s+written as a mesh:\s*(.*)", line)
+        if m:
+            reason = f"{m.group(1)}: {re.sub(r'[0-9]+', 'N', m.group(2).strip())}"[:200]
+            counts[reason] = counts.get(reason, 0) + 1
+    return "; ".join(f"{k} x{n}" for k, n in sorted(counts.items(), key=lambda kv: -kv[1]))
+
+
 def parse_triangles(stdout):
     m = re.search(r"\((\d+)\s+triangles", stdout)
     return int(m.group(1)) if m else None
@@ -136,7 +147,7 @@ def convert(cadnurbs, step, out, kind, timeout):
     except subprocess.TimeoutExpired:
         return {"status": "timeout", "seconds": time.perf_counter() - t0, "error": f"timeout after {timeout} s"}
     seconds = time.perf_counter() - t0
-    r = {"seconds": seconds, "stdout": p.stdout}
+    r = {"seconds": seconds, "stdout": p.stdout, "stderr": p.stderr}
     if p.returncode != 0:
         err = last_line(p.stderr)
         if any(s in err for s in NA_PATTERNS):
@@ -185,6 +196,8 @@ def measure_part(args, family, step, kinds_run):
             rec[kind.name + "_error"] = r["error"]
         if kind.name == "x3dv" and r["status"] == "ok":
             rec["faces"], rec["fallbacks"] = parse_faces(r["stdout"])
+            if rec["fallbacks"]:
+                rec["fallback_reasons"] = parse_fallback_reasons(r["stderr"])
         if kind.name == "mesh" and r["status"] == "ok":
             rec["mesh_triangles"] = parse_triangles(r["stdout"])
     return rec
@@ -367,6 +380,24 @@ def report(args, families, records, fc_records, notes, protos_bytes, elapsed):
     for r, k in fails:
         out.append(f"- {r['family']}/{r['part']} [{k}]: {r.get(k + '_error', '')}")
     if fails:
+        out.append("")
+
+    fallen = [r for r in records if r.get("fallbacks")]
+    out.append(f"## Parts with faces fallen back to a mesh ({len(fallen)})\n")
+    reasons = {}
+    for r in fallen:
+        for item in (r.get("fallback_reasons") or "").split("; "):
+            m = re.match(r"(.*) x(\d+)$", item)
+            if m:
+                reasons[m.group(1)] = reasons.get(m.group(1), 0) + int(m.group(2))
+    if reasons:
+        out.append(md_table(["reason (numbers as N)", "faces"],
+                            [[k, str(n)] for k, n in sorted(reasons.items(), key=lambda kv: -kv[1])]))
+        out.append("")
+    for r in fallen:
+        out.append(f"- {r['family']}/{r['part']}: {r['fallbacks']} of {r['faces']} faces"
+                   + (f" ({r['fallback_reasons']})" if r.get("fallback_reasons") else ""))
+    if fallen:
         out.append("")
 
     # Where the bytes are.
