@@ -6,8 +6,8 @@
 //     (instance_repeated_faces: holes, fillets);
 //   - planar faces bounded by straight edges become exact polygons (planar_face_polygons), all those of
 //     one node and colour one PolygonMesh with welded vertices (weld_polygon_meshes, within τ/4);
-//   - trimming curves lose the knots their shape does not need (knot_removal, within half the trimming
-//     precision), then runs of straight trimming segments become polylines (join_straight_trim_runs);
+//   - trimming curves lose the knots their shape does not need (knot_removal, moving them by at most τ/4
+//     in 3D), then runs of straight trimming segments become polylines (join_straight_trim_runs);
 //   - a trimming loop that is just the surface's own domain boundary is dropped (untrimmed surface);
 //   - knot vectors become whole numbers where an affine map allows (whole_number_knots).
 // What the writer does besides (one DEF/USE per repeated node) is the writer's. Faces that carry a name

@@ -106,10 +106,17 @@ double estimate(const TrimmedSurface& t, const SurfaceEvaluator& e, int level) {
     polys.push_back(std::move(poly));
     chords.push_back(std::move(ch));
   }
+  // Delaunay in coordinates where an average knot span is a unit square: in raw (u,v) a domain like
+  // [0, pi] x [0, 5080] gets slivers that run across knot lines, where the density has kinks.
+  const Eigen::Vector2d span_scale((us.size() - 1) / (us.back() - us.front()), (vs.size() - 1) / (vs.back() - vs.front()));
+  std::vector<std::vector<Eigen::Vector2d>> scaled_polys = polys;
+  for (auto& poly : scaled_polys)
+    for (auto& p : poly) p = p.cwiseProduct(span_scale);
   std::vector<Eigen::Vector2d> interior;
   for (double v : vs)
-    for (double u : us) interior.emplace_back(u, v);
-  const PlanarTriangulation cdt = triangulate_polygon(polys, interior);
+    for (double u : us) interior.push_back(Eigen::Vector2d(u, v).cwiseProduct(span_scale));
+  PlanarTriangulation cdt = triangulate_polygon(scaled_polys, interior);
+  for (auto& p : cdt.points) p = p.cwiseQuotient(span_scale);
   double sum = 0;
   for (const auto& tri : cdt.triangles) sum += triangle_integral(e, cdt.points[tri[0]], cdt.points[tri[1]], cdt.points[tri[2]]);
   // Strips: which side of each loop the region lies on (even-odd), from a point just left of a chord.

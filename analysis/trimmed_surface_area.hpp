@@ -2,8 +2,8 @@
 // Area of a trimmed NURBS surface: the integral of |Su x Sv| over the trimmed (u,v) domain.
 //
 // The domain is the constrained Delaunay triangulation (CGAL) of the loops sampled as polygons plus
-// a grid on every knot line, so most triangles lie inside one Bézier patch, where the integrand is
-// smooth; each triangle gets a collapsed (Duffy) 6 x 6 Gauss-Legendre rule. The thin regions
+// a grid on every knot line, Delaunay in coordinates where an average knot span is a unit square, so
+// most triangles lie inside one Bézier patch, where the integrand is smooth; each triangle gets a collapsed (Duffy) 6 x 6 Gauss-Legendre rule. The thin regions
 // between each polygon chord and its trimming curve are added (or taken away) exactly as curved
 // strips, parametrised by (chord to curve) x (along the chord) with their own Gauss rule, so the
 // polygon never limits the accuracy. Sampling and grid are doubled until two successive estimates

@@ -1,7 +1,7 @@
 #include <iomanip>
 #include <iostream>
 
-#include "analysis/trimmed_surface_area.hpp"
+#include "analysis/scene_area.hpp"
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
 #include "converters/file_formats.hpp"
@@ -35,31 +35,20 @@ int run_info(const std::vector<std::string>& args) {
   for_each_shape(scene, [&](const Shape& shape, const Eigen::Affine3d& world, const Colour&) {
     std::cout << "  [" << index++ << "] " << (display_name(shape).empty() ? "(unnamed)" : display_name(shape)) << ": ";
     if (!shape.source_type.empty()) std::cout << shape.source_type << " as ";
-    double area = 0;
     if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry)) {
       const auto& s = t->surface;
       std::cout << (t->loops.empty() ? "NURBS surface" : "trimmed NURBS surface") << ", degree " << degrees(s) << ", "
                 << s.u_count << "x" << s.v_count << " control points, " << s.u_knots.size() + s.v_knots.size()
                 << " knots, " << (s.is_rational() ? "rational" : "polynomial") << ", " << t->loops.size()
                 << " trimming loops";
-      // Exact for rigid placements (the usual case); a scaled node scales the area by the
-      // product of its two largest stretches only approximately, so integrate in world space.
-      TrimmedSurface placed = *t;
-      for (auto& p : placed.surface.points) p = world * p;
-      area = trimmed_surface_area(placed, 1e-9);
     } else if (const auto* c = std::get_if<NurbsCurve>(&shape.geometry)) {
       std::cout << "NURBS curve, degree " << c->degree() << ", " << c->count() << " control points";
     } else if (const auto* m = std::get_if<TriangleMesh>(&shape.geometry)) {
-      TriangleMesh w = *m;
-      for (auto& p : w.positions) p = world * p;
-      area = mesh_area(w);
       std::cout << "mesh, " << m->positions.size() << " vertices, " << m->triangles.size() << " triangles";
     } else if (const auto* pm = std::get_if<PolygonMesh>(&shape.geometry)) {
-      TriangleMesh w = triangulated(*pm);
-      for (auto& p : w.positions) p = world * p;
-      area = mesh_area(w);
       std::cout << "planar polygons, " << pm->positions.size() << " vertices, " << pm->polygons.size() << " polygons";
     }
+    const double area = shape_area(shape, world);
     if (area > 0) std::cout << ", area " << std::setprecision(8) << area;
     std::cout << "\n";
     total_area += area;

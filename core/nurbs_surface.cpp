@@ -98,7 +98,7 @@ double trim_parameter_tolerance(const NurbsSurface& surface, double tau) {
   const double domain = std::max(surface.u_end() - surface.u_start(), surface.v_end() - surface.v_start());
   const double bound = surface_derivative_bound(surface);
   double tolerance = 1e-3 * domain;
-  if (bound > 0.0) tolerance = std::min(tolerance, 0.5 * tau / bound);
+  if (bound > 0.0) tolerance = std::min(tolerance, 0.1 * tau / bound);
   return tolerance;
 }
 

@@ -38,8 +38,10 @@ std::vector<std::vector<Eigen::Vector3d>> surface_derivatives(const NurbsSurface
 // (k-1)·|P_{i+1} - P_i| / (t_{i+k} - t_{i+1}), times (w_max/w_min)^2 for rational surfaces.
 double surface_derivative_bound(const NurbsSurface& surface);
 
-// A distance in (u,v) that moves the surface point by at most τ/2 (τ = coordinate_tolerance): τ/(2·L),
-// at most 1/1000 of the domain's size. The precision of trimming curves written within τ.
+// A distance in (u,v) that moves the surface point by at most τ/10 (τ = coordinate_tolerance): τ/(10·L),
+// at most 1/1000 of the domain's size. The precision of trimming curves written within τ: finer than
+// the control points', because a trimmed region's area moves with its whole boundary (a boundary moved
+// by τ/2 changes a thin part's area by more than a millionth; τ/10 costs a few per cent of a file).
 double trim_parameter_tolerance(const NurbsSurface& surface, double coordinate_tolerance);
 
 // Unit normal Su x Sv at (u, v); near a degenerate point (Su x Sv ~ 0) it steps a little into the

@@ -172,11 +172,12 @@ NodePtr mesh_node(const TriangleMesh& mesh, VrmlDialect dialect, const GeometryP
   return node;
 }
 
-// Exact planar faces: convex polygons sharing vertices. No normals: creaseAngle 0 (the default) shades
+// Exact planar faces: convex polygons sharing vertices, corners within τ/2 like control points (they are
+// the exact geometry, not an approximation within a deviation). No normals: creaseAngle 0 (the default) shades
 // every polygon flat, which is what a plane is.
 NodePtr polygon_mesh_node(const PolygonMesh& mesh, VrmlDialect dialect, const GeometryPrecision& p) {
   auto node = make_node("IndexedFaceSet");
-  node->set("coord", SFNode{coordinate_node(dialect, mesh.positions, with_digits(p.coordinate_tolerance, p))});
+  node->set("coord", SFNode{coordinate_node(dialect, mesh.positions, with_digits(0.5 * p.coordinate_tolerance, p))});
   MFInt32 indices;
   for (const auto& polygon : mesh.polygons) {
     indices.values.insert(indices.values.end(), polygon.begin(), polygon.end());

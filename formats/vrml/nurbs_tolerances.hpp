@@ -13,7 +13,8 @@
 //                                 basis; never more than Δ/1000 so that spans keep their proportions.
 //
 // Weights are never written less precisely than w_min/100. Trimming curves live in the surface's (u,v)
-// domain: they get a parameter tolerance τ/(2·L), L the derivative bound below, and then the same rules.
+// domain: they get a parameter tolerance τ/(10·L) (trim_parameter_tolerance, core/nurbs_surface.hpp), L
+// the derivative bound there, and then the same rules.
 #include "core/nurbs_curve.hpp"
 #include "core/nurbs_surface.hpp"  // surface_derivative_bound, trim_parameter_tolerance
 
