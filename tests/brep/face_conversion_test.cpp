@@ -281,6 +281,41 @@ std::pair<TrimmedSurface, double> exact_torus_face(const TopoDS_Face& face, doub
   return {s, measure_trimmed_surface(s, Eigen::Affine3d::Identity()).area};
 }
 
+TEST(FaceConversion, TorusFaceOverAFullTurnStartingBelowMinusPi) {
+  // R_Axial_DIN0411's lead bends: a quarter turn of a torus around its axis, a full turn around its tube
+  // from v = -3.141592653589794 (2 ulps below -pi) to pi, 2 pi + 9e-16 in all. Cut to one period and
+  // moved into [0, 2 pi) by a Geom_RectangularTrimmedSurface, the range came out 9e-16 longer than 2 pi
+  // again, which Convert_TorusToBSplineSurface refuses; NurbsConvert (over the face's bounds) refused it
+  // too, and the face became a mesh.
+  const double v0 = -3.141592653589794, v1 = pi;
+  ASSERT_GT(v1 - v0, 2 * pi);
+  const double major = 1.2, minor = 0.4;
+  const TopoDS_Face face =
+      BRepBuilderAPI_MakeFace(new Geom_ToroidalSurface(gp_Ax3(), major, minor), 0, pi / 2, v0, v1, 1e-7).Face();
+  const OcctReference reference = occt_reference(face);
+  const double area = exact_torus_face(face, major, minor, 1e-3).second;
+  EXPECT_NEAR(area, pi * pi * major * minor, close * area);  // (pi / 2) x (2 pi r) x R
+  EXPECT_NEAR(area, reference.area, close * area);
+}
+
+TEST(FaceConversion, SpindleTorusFaceOverAFullTurn) {
+  // A spindle torus (tube radius 0.9 above the axis distance 0.5): the tube crosses the axis. OCCT's
+  // converter takes it (the circle-of-circles net is linear in the profile's poles, whatever their sign).
+  const double major = 0.5, minor = 0.9, v0 = -3.141592653589794, v1 = pi;
+  const TopoDS_Face face =
+      BRepBuilderAPI_MakeFace(new Geom_ToroidalSurface(gp_Ax3(), major, minor), 0, pi / 2, v0, v1, 1e-7).Face();
+  const OcctReference reference = occt_reference(face);
+  const double area = exact_torus_face(face, major, minor, 1e-3).second;
+  // (pi / 2) r times the integral of |R + r cos v| over a turn: the tube's inner part, where R + r cos v < 0,
+  // lies beyond the axis.
+  const double turn = std::acos(-major / minor);
+  const double exact = 0.5 * pi * minor *
+                       (2 * (major * turn + minor * std::sin(turn)) - 2 * (major * (pi - turn) - minor * std::sin(turn)));
+  EXPECT_NEAR(reference.adaptive_area, exact, 1e-6 * exact);
+  // Our integration has a kink of |Su x Sv| on the axis inside its triangles there: 6e-4 off.
+  EXPECT_NEAR(area, exact, 1e-3 * exact);
+}
+
 TEST(FaceConversion, TorusSeamPcurvesAFewMicroradiansOff) {
   // L_Axial_L11.0mm_D4.5mm_P15.24mm_Horizontal_Fastron_MECC's lead bend (R 0.7, r 0.35, u a quarter turn,
   // v from pi to 3 pi: the seam on the inner equator): the seam's pcurves lie 9.65e-6 off in u and v,
