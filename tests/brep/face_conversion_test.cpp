@@ -363,6 +363,45 @@ TEST(FaceConversion, TorusSeamPcurvesAFewMicroradiansOff) {
   EXPECT_EQ(s.loops[0].segments.size(), 4u);
 }
 
+TEST(FaceConversion, PcurveAPeriodAwayFromItsNeighbours) {
+  // L_CommonMode_Toroid_Vertical_L19.3mm...'s sliver next to a cylinder's seam: one edge's pcurve lies a
+  // whole turn away from where its neighbours meet it. Here a triangle on a cylinder, u from -0.2 to 0,
+  // whose helix side (from the top corner at u = 0 to the bottom one at u = -0.2) is given at u + 2 pi.
+  const double r = 1.5, u0 = -0.2, height = 1.0;
+  Handle(Geom_CylindricalSurface) cylinder = new Geom_CylindricalSurface(gp_Ax3(), r);
+  const TopoDS_Vertex a = BRepBuilderAPI_MakeVertex(cylinder->Value(u0, 0)), b = BRepBuilderAPI_MakeVertex(cylinder->Value(0, 0)),
+                      c = BRepBuilderAPI_MakeVertex(cylinder->Value(0, height));
+  auto edge = [&](const gp_Pnt2d& from, const gp_Pnt2d& to, const TopoDS_Vertex& start, const TopoDS_Vertex& end) {
+    const gp_Vec2d d(from, to);
+    TopoDS_Edge e = BRepBuilderAPI_MakeEdge(new Geom2d_Line(from, gp_Dir2d(d)), cylinder, start, end, 0, d.Magnitude()).Edge();
+    BRepLib::BuildCurves3d(e);
+    return e;
+  };
+  BRep_Builder builder;
+  TopoDS_Wire wire;
+  builder.MakeWire(wire);
+  builder.Add(wire, edge(gp_Pnt2d(u0, 0), gp_Pnt2d(0, 0), a, b));
+  builder.Add(wire, edge(gp_Pnt2d(0, 0), gp_Pnt2d(0, height), b, c));
+  builder.Add(wire, edge(gp_Pnt2d(2 * pi, height), gp_Pnt2d(u0 + 2 * pi, 0), c, a));
+  TopoDS_Face face;
+  builder.MakeFace(face, cylinder, 1e-7);
+  builder.Add(face, wire);
+  const BrepTranslation t = shape_to_scene(face, "triangle");
+  ASSERT_EQ(t.face_count, 1);
+  for (const auto& f : t.fallbacks) ADD_FAILURE() << "fell back to a mesh: " << f.reason;
+  ASSERT_TRUE(std::holds_alternative<TrimmedSurface>(t.scene.root.shapes[0].geometry));
+  const auto& s = std::get<TrimmedSurface>(t.scene.root.shapes[0].geometry);
+  EXPECT_NO_THROW(validate(s, "triangle"));
+  EXPECT_TRUE(region_left_of_loop(s, 0));
+  const double area = measure_trimmed_surface(s, Eigen::Affine3d::Identity()).area;
+  EXPECT_NEAR(area, 0.5 * r * -u0 * height, close * area);
+  TessellationReport report;
+  const double deviation = 1e-3;
+  const TriangleMesh mesh = tessellate_to_deviation(s, deviation, &report);
+  EXPECT_EQ(report.uncertified_triangles, 0);
+  EXPECT_LE(measure_deviation(mesh, s).overall.max, deviation);
+}
+
 TEST(FaceConversion, BrokenFaceBecomesAReportedMesh) {
   // A square whose last edge's pcurve ends 1 mm away from where the first starts: the wire is open.
   Handle(Geom_Plane) plane = new Geom_Plane(gp_Ax3());
