@@ -4,6 +4,7 @@
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Bnd_Box2d.hxx>
+#include <Convert_TorusToBSplineSurface.hxx>
 #include <Geom2d_BezierCurve.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
@@ -18,8 +19,11 @@
 #include <Geom_SurfaceOfLinearExtrusion.hxx>
 #include <Geom_SurfaceOfRevolution.hxx>
 #include <Geom_ToroidalSurface.hxx>
+#include <gp_Torus.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TColgp_Array1OfPnt2d.hxx>
 #include <Precision.hxx>
 #include <TopExp_Explorer.hxx>
@@ -166,6 +170,39 @@ void face_uv_bounds(const TopoDS_Face& face, double& u0, double& u1, double& v0,
   box.Get(u0, v0, u1, v1);
 }
 
+// The end of a range starting at `a` and ending at `b` or one period later, whichever comes first, such
+// that end - a <= period in floating point too (a + period may round up): OCCT's converters refuse a
+// range longer than 2 pi, even by a rounding error.
+double within_one_period(double a, double b, double period) {
+  double end = std::min(b, a + period);
+  while (end - a > period) end = std::nextafter(end, a);
+  return end;
+}
+
+// The analytic surface over [u0, u1] x [v0, v1] as a B-spline (GeomConvert), a torus straight through
+// Convert_TorusToBSplineSurface: a Geom_RectangularTrimmedSurface moves a range into [0, 2 pi) and may
+// make it one rounding error longer than 2 pi (v from -3.141592653589794 to 3.1415926535897922 came out
+// as 3.1415926535897922 to 9.4247779607693793), which the converter refuses.
+Handle(Geom_BSplineSurface) analytic_bspline(const Handle(Geom_Surface)& basis, double u0, double u1, double v0,
+                                             double v1) {
+  auto torus = Handle(Geom_ToroidalSurface)::DownCast(basis);
+  if (torus.IsNull())
+    return GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(basis, u0, u1, v0, v1));
+  const Convert_TorusToBSplineSurface convert(torus->Torus(), u0, u1, v0, v1);
+  TColgp_Array2OfPnt poles(1, convert.NbUPoles(), 1, convert.NbVPoles());
+  TColStd_Array2OfReal weights(1, convert.NbUPoles(), 1, convert.NbVPoles());
+  for (int i = 1; i <= convert.NbUPoles(); ++i)
+    for (int j = 1; j <= convert.NbVPoles(); ++j) {
+      poles(i, j) = convert.Pole(i, j);
+      weights(i, j) = convert.Weight(i, j);
+    }
+  TColStd_Array1OfReal u_knots(1, convert.NbUKnots()), v_knots(1, convert.NbVKnots());
+  TColStd_Array1OfInteger u_mults(1, convert.NbUKnots()), v_mults(1, convert.NbVKnots());
+  for (int i = 1; i <= convert.NbUKnots(); ++i) u_knots(i) = convert.UKnot(i), u_mults(i) = convert.UMultiplicity(i);
+  for (int j = 1; j <= convert.NbVKnots(); ++j) v_knots(j) = convert.VKnot(j), v_mults(j) = convert.VMultiplicity(j);
+  return new Geom_BSplineSurface(poles, weights, u_knots, v_knots, u_mults, v_mults, convert.UDegree(), convert.VDegree());
+}
+
 }  // namespace
 
 std::optional<BSplineFace> direct_face(const TopoDS_Face& face, EdgeNumbering& edges) {
@@ -195,13 +232,13 @@ std::optional<BSplineFace> direct_face(const TopoDS_Face& face, EdgeNumbering& e
   face_uv_bounds(face, u0, u1, v0, v1);
   basis->Bounds(su0, su1, sv0, sv1);
   if (!basis->IsUPeriodic()) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
-  else if (u1 - u0 > basis->UPeriod()) u1 = u0 + basis->UPeriod();
+  else u1 = within_one_period(u0, u1, basis->UPeriod());
   if (!basis->IsVPeriodic()) v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
-  else if (v1 - v0 > basis->VPeriod()) v1 = v0 + basis->VPeriod();
+  else v1 = within_one_period(v0, v1, basis->VPeriod());
   if (!(u1 > u0) || !(v1 > v0)) return std::nullopt;
 
   BSplineFace out;
-  out.surface = GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(basis, u0, u1, v0, v1));
+  out.surface = analytic_bspline(basis, u0, u1, v0, v1);
   Standard_Real s0, s1, t0, t1;
   out.surface->Bounds(s0, s1, t0, t1);
   // The face's size, from a 5 x 5 grid of its surface: mapped points must agree to 1e-9 of it.

@@ -12,7 +12,8 @@ namespace cadnurbs {
 // with the face's pcurves on it, exactly:
 // - a B-spline or Bezier surface as it is, its pcurves converted (Geom2dConvert keeps their paths);
 // - a plane, cylinder, cone, sphere, torus, surface of revolution or of linear extrusion converted over the
-//   face's (u, v) bounds (GeomConvert). Where the conversion keeps a parameter (a plane's two, a cylinder's
+//   face's (u, v) bounds, at most one period even after rounding (GeomConvert; a torus straight through
+//   Convert_TorusToBSplineSurface, which takes any radii). Where the conversion keeps a parameter (a plane's two, a cylinder's
 //   or cone's axial one) pcurves pass unchanged; where it changes one (angles become rational quadratic
 //   parameters) iso-parameter lines (Geom2d_Line, or B-splines whose poles lie on one iso-line) are mapped
 //   by their end points, which is exact because the map is monotone in each parameter.

@@ -1,6 +1,5 @@
 #include "formats/brep/face_pcurves.hpp"
 
-#include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2dConvert.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
@@ -12,6 +11,7 @@
 #include <TopoDS_Wire.hxx>
 
 #include "formats/brep/face_to_trimmed_surface.hpp"
+#include "formats/brep/wire_order.hpp"
 
 namespace cadnurbs {
 
@@ -40,8 +40,7 @@ std::vector<WireUses> face_pcurves(
     int edge_count = 0;
     for (TopoDS_Iterator e(wire); e.More(); e.Next()) ++edge_count;
     WireUses uses;
-    for (BRepTools_WireExplorer ex(wire, face); ex.More(); ex.Next()) {
-      const TopoDS_Edge& edge = ex.Current();
+    for (const TopoDS_Edge& edge : wire_order(wire, face)) {
       const int number = edge_number(edge);
       Standard_Real first = 0, last = 0;
       // For a seam, the edge's orientation in the wire picks which of its two pcurves this use is.

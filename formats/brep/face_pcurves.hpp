@@ -32,7 +32,7 @@ struct BSplineFace {
 Handle(Geom2d_BSplineCurve) trimmed_bspline(const Handle(Geom2d_Curve)& curve, double first, double last);
 
 // Takes a FORWARD face, the number of each of its edges, and how a pcurve (with its range) becomes a
-// B-spline on the target surface. Returns every wire's edge uses in order (BRepTools_WireExplorer), each
+// B-spline on the target surface. Returns every wire's edge uses in order (wire_order), each
 // run as the wire uses it. Throws FaceConversionError for a missing pcurve, an empty edge range, or a wire
 // whose edges do not all follow each other.
 std::vector<WireUses> face_pcurves(

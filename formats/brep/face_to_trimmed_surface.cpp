@@ -22,6 +22,7 @@
 #include "formats/brep/loop_orientation.hpp"
 #include "formats/brep/occt_errors.hpp"
 #include "formats/brep/occt_to_nurbs.hpp"
+#include "formats/brep/pcurve_alignment.hpp"
 
 namespace cadnurbs {
 
@@ -273,6 +274,7 @@ TrimmedSurface face_to_trimmed_surface(const TopoDS_Face& face, EdgeNumbering& e
   Handle(Geom_BSplineSurface)& surface = converted.surface;
   std::vector<WireUses>& wires = converted.wires;
   step("unperiodizing", [&] {
+    align_pcurves(surface, wires);
     unperiodize(surface, wires);
     return 0;
   });

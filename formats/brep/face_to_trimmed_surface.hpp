@@ -19,10 +19,11 @@ class FaceConversionError : public std::runtime_error {
 //   spheres, tori, revolutions, extrusions; B-splines kept; offsets approximated by OCCT); periodic
 //   B-splines unperiodized, with the pcurves shifted by whole periods, or the surface re-based, when the
 //   face crosses the seam of the parameterization;
-// - one loop per wire: the edges' pcurves on the converted surface in wire order (BRepTools_WireExplorer),
+// - one loop per wire: the edges' pcurves on the converted surface in wire order (wire_order),
 //   each trimmed to its edge and run as the wire uses it, with TrimEdgeRef{edges.number(edge), runs
 //   against the edge's own direction}; a seam gives two segments with one edge number, a degenerated edge
-//   a segment along its pole;
+//   a segment along its pole; a pcurve a whole period away from its neighbours on a closed surface moved
+//   next to them (align_pcurves);
 // - for a REVERSED face, the surface mirrored in u (u -> a + b - u) so that Su x Sv points out of the
 //   material;
 // - loops outer counter-clockwise, holes clockwise (orient_loops); gaps between segments closed when the
