@@ -79,11 +79,22 @@ std::vector<ProtoDefinition> parse_proto_library(const std::string& library) {
   return protos;
 }
 
+// URNs of native implementations, tried before our PROTO file (first match wins):
+// - "urn:inet:blaxxun.com:node:<Name>": blaxxun Contact / BS Contact, whose native nodes these are.
+// - "urn:web3d:vrml97:node:<Name>": a URN no standard defines; Castle Game Engine (view3dscene) maps it
+//   to its built-in node of that name. Listed only where that node has our fields and draws:
+//   NurbsSurface and NurbsGroup (its VRML97 nodes, in newer versions; view3dscene 4.2 has none of them
+//   and says "Unknown node URN", harmless). Never for NurbsCurve2D and Polyline2D: the URN maps to its
+//   X3D nodes of those names (controlPoint, lineSegments instead of point), a parse error that skips
+//   the rest of the file; nor for TrimmedSurface and Contour2D, whose nodes draw nothing and take only
+//   those X3D curve nodes as children. X_ITE fetches no URN and uses the PROTO file. Details:
+//   tests/viewers/README.md.
 std::string externproto_declaration(const ProtoDefinition& proto, const std::string& protos_url) {
   std::string out = "EXTERNPROTO " + proto.name + " [\n";
   for (const auto& d : proto.interface) out += " " + d.kind + " " + d.type + " " + d.name + "\n";
-  out += "] [\"urn:web3d:vrml97:node:" + proto.name + "\" \"urn:inet:blaxxun.com:node:" + proto.name + "\" \"" +
-         protos_url + "#" + proto.name + "\"]\n";
+  out += "] [";
+  if (proto.name == "NurbsSurface" || proto.name == "NurbsGroup") out += "\"urn:web3d:vrml97:node:" + proto.name + "\" ";
+  out += "\"urn:inet:blaxxun.com:node:" + proto.name + "\" \"" + protos_url + "#" + proto.name + "\"]\n";
   return out;
 }
 
