@@ -820,8 +820,14 @@ class Tessellator {
       if (c.uses.empty()) continue;
       const CurveUse& u = c.uses.front();
       // A gap closure shorter than D/2 is one vertex: sampled on its own it would leave a crack
-      // beside the neighbouring face (Ventilator.stp).
-      c.degenerate = is_degenerate_segment(*faces_[u.face].eval, segment(u), (c.unnamed ? 0.5 : 1e-3) * d_);
+      // beside the neighbouring face (Ventilator.stp). A loop made only of such segments closes no
+      // gap: a small hole read back from a file that names no edges (11752.stp) stays a hole.
+      const Face& f = faces_[u.face];
+      const auto& loop = f.loops[u.loop].segments;
+      const bool gap_closure = c.unnamed && !std::all_of(loop.begin(), loop.end(), [&](const TrimSegment& s) {
+        return is_degenerate_segment(*f.eval, s, 0.5 * d_);
+      });
+      c.degenerate = is_degenerate_segment(*f.eval, segment(u), (gap_closure ? 0.5 : 1e-3) * d_);
     }
   }
 

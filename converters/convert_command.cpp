@@ -28,6 +28,9 @@ std::string help() {
          "                      (formats that hold triangles only imply it)\n"
          "  --deviation D       that maximum deviation, in the output unit (default: 0.001 x the\n"
          "                      bounding-box diagonal)\n"
+         "  --display-deviation D  NURBS output: uTessellation / vTessellation / trimming-curve counts\n"
+         "                      with which viewers that tessellate uniformly (X_ITE, view3dscene) draw\n"
+         "                      every face within D (default: as --deviation; 0: none written)\n"
          "  --steps N           instead: uniform tessellation, N steps per knot span (seed 000's method)\n"
          "  --exact-nurbs       every face as the trimmed NURBS of its source, orders, knots, weights and\n"
          "                      control points unchanged (only DEF/USE sharing applies)\n"
@@ -63,7 +66,7 @@ void print_compaction(const std::string& out, const CompactReport& r) {
 }  // namespace
 
 int run_convert(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("convert", args, {"output", "steps", "precision", "deviation", "units"},
+  const Arguments a = parse_arguments("convert", args, {"output", "steps", "precision", "deviation", "display-deviation", "units"},
                                       {"mesh", "euclidean", "self-contained", "exact-nurbs", "pretty", "help"});
   if (a.has("help")) {
     std::cout << help();
@@ -78,6 +81,8 @@ int run_convert(const std::vector<std::string>& args) {
   const double deviation = a.number("deviation", 0.0);
   if (a.has("deviation") && !(deviation > 0)) throw UsageError("--deviation must be positive");
   if (a.has("deviation") && a.has("steps")) throw UsageError("--deviation and --steps exclude each other");
+  const double display_deviation = a.number("display-deviation", -1.0);
+  if (a.has("display-deviation") && !(display_deviation >= 0)) throw UsageError("--display-deviation must be 0 or more");
   const int precision = a.integer("precision", 0);
   if (a.has("precision") && (precision < 1 || precision > 17)) throw UsageError("--precision must be 1 to 17");
   std::optional<LengthUnit> unit;
@@ -104,6 +109,7 @@ int run_convert(const std::vector<std::string>& args) {
   const auto box = scene_bounding_box(scene);
   // The mesh keeps the NURBS file's Viewpoint so that both render from the same place.
   options.viewpoint = framing_viewpoint(box);
+  options.display_deviation = display_deviation >= 0 ? display_deviation : 1e-3 * box.diagonal().norm();
   const bool mesh = a.has("mesh") || a.has("steps") || a.has("deviation") || format.meshes_only;
   Scene written;
   std::string how;

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "analysis/tessellation_hints.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/iges/iges_reader.hpp"
 #include "formats/iges/iges_writer.hpp"
@@ -79,6 +80,8 @@ void write_as_vrml(const std::string& path, const Scene& scene, const SceneWrite
   vrml.viewpoint = options.viewpoint;
   vrml.title = options.title;
   vrml.gzipped = gzipped;
+  vrml.display_deviation = options.display_deviation;
+  vrml.tessellation_hints = &tessellation_hints;
   write_vrml(path, scene, vrml);
   if (encoding == VrmlEncoding::vrml97 && !options.self_contained) {
     // The EXTERNPROTO URLs name this file beside the output; write it unless it is already there.

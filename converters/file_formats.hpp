@@ -16,6 +16,9 @@ struct SceneWriteOptions {
   int significant_digits = 0;   // 0: automatic (fewest digits within the tolerance)
   bool self_contained = false;  // VRML97: paste the NURBS PROTOs instead of EXTERNPROTO
   bool pretty = false;          // VRML/X3D: indent nodes, one field per line
+  // VRML/X3D NURBS: > 0 writes tessellation counts with which uniform-grid viewers draw every face
+  // within about this deviation (analysis/tessellation_hints), in the scene's units.
+  double display_deviation = 0.0;
   std::optional<Viewpoint> viewpoint;
   std::string title;
 };

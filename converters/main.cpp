@@ -11,7 +11,7 @@ const char* kUsage =
     "usage: cadnurbs COMMAND [options]\n"
     "commands:\n"
     "  convert IN -o OUT [--mesh] [--deviation D | --steps N] [--exact-nurbs] [--units U]\n"
-    "                    [--precision N] [--pretty] [--euclidean] [--self-contained]\n"
+    "                    [--display-deviation D] [--precision N] [--pretty] [--euclidean] [--self-contained]\n"
     "  info    IN [--euclidean]\n"
     "  capping --shape NAME|all -o OUT [--path FILE --profile FILE] [--max-chord-deviation D]\n"
     "  demo    [-o DIR]\n"

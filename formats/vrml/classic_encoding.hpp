@@ -9,7 +9,7 @@
 #include <set>
 #include <string>
 
-#include "formats/vrml/x3d_node.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 

@@ -7,7 +7,7 @@
 // any other node are refused.
 #include <string>
 
-#include "formats/vrml/x3d_node.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 

@@ -96,13 +96,20 @@ NodePtr trim_segment_node(const TrimSegment& segment, VrmlDialect dialect, doubl
   return node;
 }
 
-MFNode trimming_contours(const TrimmedSurface& trimmed, VrmlDialect dialect, const GeometryPrecision& p) {
+MFNode trimming_contours(const TrimmedSurface& trimmed, VrmlDialect dialect, const GeometryPrecision& p,
+                         const TessellationHints* hints) {
   const double parameter_tolerance = trim_parameter_tolerance(trimmed.surface, p.coordinate_tolerance);
   MFNode contours;
-  for (const auto& loop : trimmed.loops) {
+  for (size_t l = 0; l < trimmed.loops.size(); ++l) {
+    const auto& loop = trimmed.loops[l];
     MFNode segments;
-    for (const auto& segment : loop.segments)
-      segments.nodes.push_back(trim_segment_node(segment, dialect, parameter_tolerance, p));
+    for (size_t k = 0; k < loop.segments.size(); ++k) {
+      NodePtr node = trim_segment_node(loop.segments[k], dialect, parameter_tolerance, p);
+      const int count = hints && l < hints->trim_segments.size() && k < hints->trim_segments[l].size()
+                            ? hints->trim_segments[l][k] : 0;
+      if (count > 0 && std::holds_alternative<NurbsCurve>(loop.segments[k])) node->set("tessellation", count);
+      segments.nodes.push_back(node);
+    }
     auto contour = make_node("Contour2D");
     contour->set("children", std::move(segments));
     contours.nodes.push_back(contour);
@@ -110,19 +117,27 @@ MFNode trimming_contours(const TrimmedSurface& trimmed, VrmlDialect dialect, con
   return contours;
 }
 
-NodePtr surface_node(const TrimmedSurface& trimmed, VrmlDialect dialect, const GeometryPrecision& p) {
+void set_surface_tessellation(Node& node, const TessellationHints* hints) {
+  if (hints && hints->u > 0) node.set("uTessellation", hints->u);
+  if (hints && hints->v > 0) node.set("vTessellation", hints->v);
+}
+
+NodePtr surface_node(const TrimmedSurface& trimmed, VrmlDialect dialect, const GeometryPrecision& p,
+                     const TessellationHints* hints) {
   if (dialect == VrmlDialect::vrml97) {
     auto surface = make_node("NurbsSurface");
     set_surface_fields(*surface, trimmed.surface, dialect, p);
+    set_surface_tessellation(*surface, hints);
     if (trimmed.loops.empty()) return surface;
     auto node = make_node("TrimmedSurface");
     node->set("surface", SFNode{surface});
-    node->set("trimmingContour", trimming_contours(trimmed, dialect, p));
+    node->set("trimmingContour", trimming_contours(trimmed, dialect, p, hints));
     return node;
   }
   auto node = make_node(trimmed.loops.empty() ? "NurbsPatchSurface" : "NurbsTrimmedSurface");
   set_surface_fields(*node, trimmed.surface, dialect, p);
-  if (!trimmed.loops.empty()) node->set("trimmingContour", trimming_contours(trimmed, dialect, p));
+  set_surface_tessellation(*node, hints);
+  if (!trimmed.loops.empty()) node->set("trimmingContour", trimming_contours(trimmed, dialect, p, hints));
   return node;
 }
 
@@ -210,8 +225,10 @@ NumberPrecision knot_precision(const std::vector<double>& knots, double toleranc
   return keeps_order(precision) ? precision : NumberPrecision{};
 }
 
-NodePtr geometry_node(const Geometry& geometry, VrmlDialect dialect, const GeometryPrecision& precision) {
-  if (const auto* trimmed = std::get_if<TrimmedSurface>(&geometry)) return surface_node(*trimmed, dialect, precision);
+NodePtr geometry_node(const Geometry& geometry, VrmlDialect dialect, const GeometryPrecision& precision,
+                      const TessellationHints* hints) {
+  if (const auto* trimmed = std::get_if<TrimmedSurface>(&geometry))
+    return surface_node(*trimmed, dialect, precision, hints);
   if (const auto* curve = std::get_if<NurbsCurve>(&geometry)) return curve_node(*curve, dialect, precision);
   if (const auto* polygons = std::get_if<PolygonMesh>(&geometry)) return polygon_mesh_node(*polygons, dialect, precision);
   return mesh_node(std::get<TriangleMesh>(geometry), dialect, precision);

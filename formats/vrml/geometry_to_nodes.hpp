@@ -10,7 +10,8 @@
 // within τ, unit normals within 1e-3 (shading only; 0.06°), equal normals once. A PolygonMesh is an
 // IndexedFaceSet of its polygons (convex, flat-shaded: no normals, creaseAngle 0).
 #include "core/scene.hpp"
-#include "formats/vrml/x3d_node.hpp"
+#include "core/tessellation_hints.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 
@@ -20,8 +21,10 @@ struct GeometryPrecision {
   bool homogeneous = true;            // controlPoint as w·P
 };
 
-// The geometry node of `geometry`. Expects valid geometry (core validate).
-NodePtr geometry_node(const Geometry& geometry, VrmlDialect dialect, const GeometryPrecision& precision);
+// The geometry node of `geometry`. Expects valid geometry (core validate). `hints` (NURBS faces only, may
+// be null): the tessellation counts to write, non-zero ones only.
+NodePtr geometry_node(const Geometry& geometry, VrmlDialect dialect, const GeometryPrecision& precision,
+                      const TessellationHints* hints = nullptr);
 
 // The precision of a knot vector written with `tolerance` (or the digits override), escalated where
 // the written values would merge distinct knots or reorder them.

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "formats/vrml/x3d_node.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 

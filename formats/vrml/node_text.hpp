@@ -2,7 +2,7 @@
 // Spelling of single field values shared by the classic and XML encodings.
 #include <string>
 
-#include "formats/vrml/x3d_node.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
-#include "formats/vrml/x3d_node.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 

@@ -1,5 +1,7 @@
 #include "formats/vrml/proto_library.hpp"
 
+#include "formats/vrml/nurbs_protos.hpp"
+
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -79,11 +81,22 @@ std::vector<ProtoDefinition> parse_proto_library(const std::string& library) {
   return protos;
 }
 
+// URNs of native implementations, tried before our PROTO file (first match wins):
+// - "urn:inet:blaxxun.com:node:<Name>": blaxxun Contact / BS Contact, whose native nodes these are.
+// - "urn:web3d:vrml97:node:<Name>": a URN no standard defines; Castle Game Engine (view3dscene) maps it
+//   to its built-in node of that name. Listed only where that node has our fields and draws:
+//   NurbsSurface and NurbsGroup (its VRML97 nodes, in newer versions; view3dscene 4.2 has none of them
+//   and says "Unknown node URN", harmless). Never for NurbsCurve2D and Polyline2D: the URN maps to its
+//   X3D nodes of those names (controlPoint, lineSegments instead of point), a parse error that skips
+//   the rest of the file; nor for TrimmedSurface and Contour2D, whose nodes draw nothing and take only
+//   those X3D curve nodes as children. X_ITE fetches no URN and uses the PROTO file. Details:
+//   tests/viewers/README.md.
 std::string externproto_declaration(const ProtoDefinition& proto, const std::string& protos_url) {
   std::string out = "EXTERNPROTO " + proto.name + " [\n";
   for (const auto& d : proto.interface) out += " " + d.kind + " " + d.type + " " + d.name + "\n";
-  out += "] [\"urn:web3d:vrml97:node:" + proto.name + "\" \"urn:inet:blaxxun.com:node:" + proto.name + "\" \"" +
-         protos_url + "#" + proto.name + "\"]\n";
+  out += "] [";
+  if (proto.name == "NurbsSurface" || proto.name == "NurbsGroup") out += "\"urn:web3d:vrml97:node:" + proto.name + "\" ";
+  out += "\"urn:inet:blaxxun.com:node:" + proto.name + "\" \"" + protos_url + "#" + proto.name + "\"]\n";
   return out;
 }
 
@@ -91,6 +104,18 @@ bool declares(const ProtoDefinition& proto, const std::string& name) {
   for (const auto& d : proto.interface)
     if (d.name == name) return true;
   return false;
+}
+
+// The embedded library (nurbs_protos.hpp), parsed once.
+const std::vector<ProtoDefinition>& nurbs_protos() {
+  static const std::vector<ProtoDefinition> protos = [] {
+    try {
+      return parse_proto_library(nurbs_protos_library());
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("cadnurbs-nurbs-protos.wrl: " + std::string(e.what()));
+    }
+  }();
+  return protos;
 }
 
 }  // namespace cadnurbs

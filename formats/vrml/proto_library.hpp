@@ -29,8 +29,10 @@ struct ProtoDefinition {
 // a name defined twice).
 std::vector<ProtoDefinition> parse_proto_library(const std::string& library);
 
-// "EXTERNPROTO <Name> [ <declarations without defaults> ] [ "urn:web3d:vrml97:node:<Name>"
-// "urn:inet:blaxxun.com:node:<Name>" "<protos_url>#<Name>" ]", newline-terminated.
+// "EXTERNPROTO <Name> [ <declarations without defaults> ] [ <URNs> "<protos_url>#<Name>" ]",
+// newline-terminated. URNs: "urn:inet:blaxxun.com:node:<Name>", preceded by
+// "urn:web3d:vrml97:node:<Name>" for NurbsSurface and NurbsGroup only (view3dscene maps that URN to
+// its built-in node of the name, which for the trimming nodes has other fields: see proto_library.cpp).
 std::string externproto_declaration(const ProtoDefinition& proto, const std::string& protos_url);
 
 // Whether the PROTO declares an interface entry called `name`.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "core/bounding_box.hpp"
@@ -97,7 +98,11 @@ class SceneMapper {
       if (def != shape_defs_.end()) shape_node->def_name = def->second;
       const bool line = std::holds_alternative<NurbsCurve>(shape.geometry);
       if (NodePtr appearance = appearance_for(shape, line, owners)) shape_node->set("appearance", SFNode{appearance});
-      shape_node->set("geometry", SFNode{geometry_node(shape.geometry, dialect_, precision)});
+      std::optional<TessellationHints> hints;
+      const auto* face = std::get_if<TrimmedSurface>(&shape.geometry);
+      if (face && options_.tessellation_hints && options_.display_deviation > 0)
+        hints = options_.tessellation_hints(*face, options_.display_deviation / stretch);
+      shape_node->set("geometry", SFNode{geometry_node(shape.geometry, dialect_, precision, hints ? &*hints : nullptr)});
       (nurbs_group ? grouped : children).nodes.push_back(shape_node);
     }
     if (nurbs_group) nurbs_group->set("children", std::move(grouped));

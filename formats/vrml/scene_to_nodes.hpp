@@ -22,7 +22,7 @@
 // 1e-6 (relative for the position) whatever the scene, so one camera is spelled alike in every file.
 #include "core/scene.hpp"
 #include "formats/vrml/vrml_write_options.hpp"
-#include "formats/vrml/x3d_node.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 

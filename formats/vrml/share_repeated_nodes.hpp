@@ -9,7 +9,7 @@
 // for a USE to save bytes. (A shared VRML97 NurbsGroup keeps meaning what an unnamed one means: the
 // reader gathers its children into the parent, as for any generated DEF.)
 #include "formats/vrml/vrml_identifier.hpp"
-#include "formats/vrml/x3d_node.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 

@@ -3,8 +3,10 @@
 #include <optional>
 #include <string>
 
+#include "core/tessellation_hints.hpp"
+#include "core/trimmed_surface.hpp"
 #include "formats/vrml/viewpoint.hpp"
-#include "formats/vrml/x3d_node.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 
@@ -30,6 +32,11 @@ struct VrmlWriteOptions {
   std::string title;
   // Indented, one field per line (for people); false: the fewest bytes (for machines and the web).
   bool pretty = false;
+  // Both set: every NURBS face gets the uTessellation / vTessellation / trimming-curve tessellation
+  // counts with which a viewer that tessellates uniformly draws it within about `display_deviation`
+  // (model units; the converter passes analysis/tessellation_hints, which the writer may not call itself).
+  double display_deviation = 0.0;
+  TessellationHints (*tessellation_hints)(const TrimmedSurface& face, double deviation) = nullptr;
   // write_vrml: the file gzip'd (.wrz, .x3dvz, .x3dz), as browsers read it.
   bool gzipped = false;
 };

@@ -1,7 +1,17 @@
 #pragma once
 // Writes a Scene as VRML97 (with the blaxxun/VRML97-amendment NURBS nodes, declared by EXTERNPROTO),
-// X3D classic (.x3dv) or X3D XML (.x3d). The mapping is described in scene_to_nodes.hpp and
-// geometry_to_nodes.hpp, the number precision in vrml_write_options.hpp and nurbs_tolerances.hpp.
+// X3D classic (.x3dv) or X3D XML (.x3d). The pipeline, one file per step:
+//
+//   Scene ──scene_to_nodes──> node graph (node_graph.hpp: Node, Field, DEF names)
+//           └ geometry_to_nodes: one geometry node per Shape (NURBS, polygons, meshes), its numbers'
+//             precision from nurbs_tolerances; tessellation hints when the options carry them
+//         ──share_repeated_nodes──> repeated subtrees DEF'd once and USE'd
+//         ──classic_encoding | xml_encoding──> text (node_text: numbers; world_info, viewpoint,
+//             proto_library: header nodes and the VRML97 EXTERNPROTOs)
+//         ──write_vrml──> file, atomically, gzip'd when asked (formats/common)
+//
+// Reading runs the other way: classic_parser | xml_parser -> node graph -> nodes_to_scene /
+// nodes_to_geometry -> Scene (vrml_reader.hpp).
 #include <string>
 
 #include "core/scene.hpp"

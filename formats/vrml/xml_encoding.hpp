@@ -5,7 +5,7 @@
 // indented by depth only when `pretty`; array tuples one per line.
 #include <string>
 
-#include "formats/vrml/x3d_node.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 

@@ -5,7 +5,7 @@
 // ProtoDeclare/ProtoInstance, Script and any other node outside the subset are refused.
 #include <string>
 
-#include "formats/vrml/x3d_node.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 

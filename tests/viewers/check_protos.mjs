@@ -8,13 +8,19 @@
 //     as a browser stores MFFloat / MFVec3f: points and normals of a rational quarter
 //     cylinder and an ellipsoid (with poles) against the analytic shapes, the area and
 //     extent of trimmed regions (disc, square with an L-shaped hole, a clockwise-only
-//     hole, ccw FALSE), default knots, and refusal of invalid input.
+//     hole, ccw FALSE), default knots, and refusal of invalid input; the tessellation
+//     counts (> 0 and < 0 as X_ITE and view3dscene read them, rounded up per span); a
+//     many-sided trimming loop on a fine grid (triangles grow with loop + grid, not their
+//     product; no T junctions: every mesh edge not on the loop is shared by two triangles);
+//  4. that the X_ITE fast paths (fields read with getValue(), written with setValue())
+//     give exactly what the standard element-by-element paths give.
 // Prints one line per check and "N passed, M failed"; exit 1 when a check fails.
 //   check_protos.mjs [PROTO_FILE]
 
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { runScript } from './protos_sandbox.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const protoFile = path.resolve(process.argv[2] ?? path.join(here, '../../formats/vrml/protos/cadnurbs-nurbs-protos.wrl'));
@@ -290,6 +296,100 @@ function meshStats(r) {
   let ok = rb.points.length > 0;
   for (const p of rb.points) if (Math.abs(Math.hypot(p.x, p.y) - 1) > 1e-6 || p.z < -0.5 - 1e-6 || p.z > 0.5 + 1e-6) ok = false;
   check('TrimmedSurface: trimmed quarter cylinder band on the cylinder, z -0.5..0.5', ok, `${rb.points.length} points`);
+}
+
+// ------------------------------------------------------------------ tessellation counts
+{
+  // ellipsoid u: 4 equal spans; uTessellation 10 -> ceil(10/4) = 3 steps a span -> 13 values
+  const r = run(surfaceScript, { ...ellipsoid, uTessellation: 10, vTessellation: 0 });
+  check('NurbsSurface: uTessellation > 0 shared among the spans, rounded up (10 over 4 spans -> 12 steps)', r.points.length === 13 * 17, `${r.points.length} points`);
+  // quarter cylinder u: 3 control points; uTessellation -2 -> 2 x 3 = 6 steps
+  const n = run(surfaceScript, { ...cylinder, uTessellation: -2 });
+  check('NurbsSurface: uTessellation < 0 means -value x control points steps (-2 x 3 = 6)', n.points.length === 7 * 2, `${n.points.length} points`);
+  // a trimming circle of 4 quadratic spans with tessellation 10: 3 chords a span
+  const c = run(trimScript, { surface: plane, trimmingContour: [{ children: [{ ...circleCurve(0.5, 0.5, 0.3), tessellation: 10 }] }] });
+  let onLoop = 0;
+  for (const p of c.points) if (Math.abs(Math.hypot(p.x, p.y) - 0.6) < 1e-5) ++onLoop;
+  check('NurbsCurve2D: tessellation > 0 shared among the spans, rounded up (10 over 4 spans -> 12 chords)', onLoop === 12, `${onLoop} points on the circle`);
+}
+
+// ------------------------------------------------------------------ triangulation size and T junctions
+function edgeCounts(tris) {
+  const m = new Map();
+  for (const [a, b, c] of tris)
+    for (const [p, q] of [[a, b], [b, c], [c, a]]) {
+      const k = p < q ? `${p} ${q}` : `${q} ${p}`;
+      m.set(k, (m.get(k) ?? 0) + 1);
+    }
+  return m;
+}
+{
+  // a 400-sided polygon hole in a plane tessellated 40 x 40
+  const N = 400, hole = [];
+  for (let i = 0; i <= N; ++i) { const a = -2 * Math.PI * i / N; hole.push([0.5 + 0.35 * Math.cos(a), 0.5 + 0.35 * Math.sin(a)]); }
+  const fine = { ...plane, uTessellation: 40, vTessellation: 40 };
+  const r = run(trimScript, { surface: fine, trimmingContour: [{ children: [{ point: hole.map(v2) }] }] });
+  const st = meshStats(r), exact = 4 * (1 - N / 2 * 0.35 * 0.35 * Math.sin(2 * Math.PI / N));
+  check('TrimmedSurface: 400-gon hole in a 40 x 40 grid: area exact', Math.abs(st.area - exact) < 1e-5 && st.negative === 0, `area ${st.area.toFixed(6)}, exact ${exact.toFixed(6)}`);
+  // grid cells 1600 x 2 triangles plus a few per loop vertex and crossing; the product
+  // of loop vertices and grid lines (400 x 40) would be far more
+  check('TrimmedSurface: triangles grow with loop + grid, not their product', r.tris.length < 2 * 1600 + 8 * N, `${r.tris.length} triangles`);
+  // every edge used once lies on the loop (radius 0.7 in space) or the square's border
+  let inner = 0;
+  for (const [k, c] of edgeCounts(r.tris)) {
+    if (c !== 1) continue;
+    const [a, b] = k.split(' ').map(Number);
+    for (const p of [r.points[a], r.points[b]]) {
+      const onHole = Math.abs(Math.hypot(p.x, p.y) - 0.7) < 1e-3, onBorder = Math.max(Math.abs(p.x), Math.abs(p.y)) > 1 - 1e-6;
+      if (!onHole && !onBorder) ++inner;
+    }
+  }
+  check('TrimmedSurface: no T junctions (every edge off the loop shared by two triangles)', inner === 0, `${inner} loose edge ends inside`);
+  // the L-shaped hole and the lid profile: same property
+  for (const [name, fields] of [['disc', { surface: fine, trimmingContour: [{ children: [circleCurve(0.45, 0.55, 0.35)] }] }],
+    ['profile on a curved surface', { surface: { ...cylinder, uTessellation: 24, vTessellation: 12 }, trimmingContour: [{ children: [{ point: [[0.1, 0.1], [0.9, 0.2], [0.7, 0.9], [0.5, 0.4], [0.2, 0.8], [0.1, 0.1]].map(v2) }] }] }]]) {
+    const q = run(trimScript, fields), counts = edgeCounts(q.tris);
+    const used = new Map();
+    for (const [k, c] of counts) if (c === 1) for (const v of k.split(' ')) used.set(v, (used.get(v) ?? 0) + 1);
+    // on a closed boundary every loose vertex has exactly two loose edges
+    const odd = [...used.values()].filter((c) => c !== 2).length;
+    check(`TrimmedSurface: ${name}: boundary is one closed chain (no T junctions)`, odd === 0 && q.tris.length > 0, `${odd} vertices with an odd boundary`);
+  }
+}
+
+// ------------------------------------------------------------------ 4. X_ITE fast paths
+// Fields as X_ITE hands them to a Script: MF fields with getValue() (their typed array) and
+// live Coordinate / Normal fields with setValue(); runScript's stand-ins take both.
+function xiteFields(value) {
+  if (Array.isArray(value)) {
+    if (value.length && typeof value[0] === 'object' && value[0] !== null && 'x' in value[0]) {
+      const c = 'z' in value[0] ? 3 : 2, flat = new Float32Array(value.length * c + 4);
+      value.forEach((e, i) => { flat[c * i] = e.x; flat[c * i + 1] = e.y; if (c === 3) flat[c * i + 2] = e.z; });
+      const out = value.slice();
+      out.getValue = () => flat;
+      return out;
+    }
+    if (value.length && typeof value[0] === 'number') {
+      const out = value.slice(), flat = Float32Array.from(value);
+      out.getValue = () => flat;
+      return out;
+    }
+    return value.map(xiteFields);
+  }
+  if (value && typeof value === 'object') return Object.fromEntries(Object.entries(value).map(([k, v]) => [k, xiteFields(v)]));
+  return value;
+}
+for (const [name, script, fields] of [
+  ['NurbsSurface ellipsoid', surfaceScript, ellipsoid],
+  ['TrimmedSurface disc', trimScript, { surface: plane, trimmingContour: [{ children: [circleCurve(0.45, 0.55, 0.35)] }] }],
+  ['TrimmedSurface cylinder band', trimScript, { surface: cylinder, trimmingContour: [{ children: [{ point: [[0, 0.25], [1, 0.25], [1, 0.75], [0, 0.75], [0, 0.25]].map(v2) }] }] }],
+]) {
+  const a = run(script, fields), b = runScript(script, xiteFields(fields), { bulk: true });
+  const same = a.points.length === b.points.length && a.tris.length === b.tris.length
+    && a.points.every((p, i) => p.x === b.points[i].x && p.y === b.points[i].y && p.z === b.points[i].z)
+    && a.normals.every((p, i) => p.x === b.normals[i].x && p.y === b.normals[i].y && p.z === b.normals[i].z)
+    && a.tris.every((t, i) => t.every((v, j) => v === b.tris[i][j]));
+  check(`fast paths: ${name} identical to the element-by-element paths`, same && b.points.length > 0, `${a.points.length} / ${b.points.length} points`);
 }
 
 console.log(`${passed} passed, ${failed} failed`);

@@ -11,6 +11,9 @@
 # to stderr, and these fail the run (exit 1) as load errors: a parse error ("Error when
 # reading", view3dscene then skips the rest of the file), an unknown node type, an
 # EXTERNPROTO that cannot be loaded, a node not allowed where it stands.
+# A file that declares its NURBS nodes by EXTERNPROTO "cadnurbs-nurbs-protos.wrl#..." with no
+# such file next to it is rendered from a scratch copy beside the project's PROTO library
+# (formats/vrml/protos, or $CADNURBS_PROTOS), as render_xite.mjs serves it.
 # Exit status: 0 with OUT.png written; 1 with a one-line error on stderr; 2 on bad
 # arguments or a missing tool. The background is view3dscene's (dark grey without a
 # Background node); compare_images.mjs finds it by itself.
@@ -32,6 +35,14 @@ scratch=$(mktemp -d "${TMPDIR:-/tmp}/render_view3dscene.XXXXXX")
 trap 'rm -rf "$scratch"' EXIT
 rm -f "$out_abs"
 log="$scratch/home/.config/view3dscene/view3dscene.log"
+protos_dir=${CADNURBS_PROTOS:-$(cd "$(dirname "$0")/../../formats/vrml/protos" && pwd)}
+if grep -q "cadnurbs-nurbs-protos.wrl" "$in" 2>/dev/null && [ ! -f "$(dirname "$in")/cadnurbs-nurbs-protos.wrl" ] \
+   && [ -f "$protos_dir/cadnurbs-nurbs-protos.wrl" ]; then
+  mkdir -p "$scratch/scene"
+  cp "$in" "$scratch/scene/"
+  cp "$protos_dir/cadnurbs-nurbs-protos.wrl" "$scratch/scene/"
+  in="$scratch/scene/$(basename "$in")"
+fi
 
 # xvfb-run -a can lose a race for a display number against another xvfb-run started at
 # the same moment; one retry covers it.
@@ -52,7 +63,8 @@ if [ -f "$log" ]; then
   warnings=$(grep "^Warning: \(VRML/X3D\|X3D\)" "$log" || true)
 fi
 if [ -n "$warnings" ]; then
-  printf '%s\n' "$warnings" | head -n 20 | sed 's/^/render_view3dscene: /' >&2
+  # head closes the pipe early when there are many warnings: not an error
+  { printf '%s\n' "$warnings" | head -n 20 | sed 's/^/render_view3dscene: /' >&2; } || true
 fi
 
 if [ "$status" -ne 0 ] || [ ! -s "$out_abs" ]; then

@@ -4,6 +4,7 @@
 //
 //   render_xite.mjs IN OUT.png [--width 400] [--height 300] [--timeout SECONDS]
 //                   [--protos DIR] [--chromium PATH] [--ignore-errors]
+//                   [--background R,G,B] [--time]
 //
 // IN's folder is served read-only on an ephemeral port of 127.0.0.1, together with
 // X_ITE's dist folder, so relative URLs inside IN (Inline, EXTERNPROTO, textures) resolve
@@ -13,12 +14,17 @@
 // the project's implementation PROTOs without copying them next to IN.
 //
 // The page is white; when the file binds no Background, X_ITE's default (black) one is
-// made white. X_ITE's splash screen, notifications and context menu are off; the
-// navigation headlight is left as the file sets it; the file's own first Viewpoint is used
-// as it is (X_ITE's StraightenHorizon option, on by default, is turned off: it would roll
-// a Viewpoint whose up direction is not +Y). After X_ITE reports the world loaded (Browser.loadURL resolved: every
-// EXTERNPROTO and Inline done) the script waits a few rendered frames, then screenshots
-// the <x3d-canvas> element.
+// made white, or the colour of --background R,G,B (components 0..1 or 0..255), so that
+// white or grey parts stand out against it (the page is then that colour too).
+// --time prints one line "render_xite: time load S first-frame S" on stdout: seconds from
+// the loadURL call to the world loaded (every EXTERNPROTO, Inline and PROTO Script
+// initialize() done), and to the first frame rendered after it.
+// X_ITE's splash screen, notifications and context menu are off; the navigation headlight
+// is left as the file sets it; the file's own first Viewpoint is used as it is (X_ITE's
+// StraightenHorizon option, on by default, is turned off: it would roll a Viewpoint whose
+// up direction is not +Y). After X_ITE reports the world loaded (Browser.loadURL
+// resolved: every EXTERNPROTO and Inline done) the script waits a few rendered frames,
+// then screenshots the <x3d-canvas> element.
 //
 // Exit status 0 with OUT.png written; 1 with a one-line error on stderr when the scene
 // fails to load or the page reports an error (X_ITE console errors, X_ITE parser errors,
@@ -40,7 +46,7 @@ const require = createRequire(import.meta.url);
 
 function usage(msg) {
   if (msg) process.stderr.write(`render_xite: ${msg}\n`);
-  process.stderr.write('usage: render_xite.mjs IN OUT.png [--width 400] [--height 300] [--timeout SECONDS] [--protos DIR] [--chromium PATH] [--ignore-errors]\n');
+  process.stderr.write('usage: render_xite.mjs IN OUT.png [--width 400] [--height 300] [--timeout SECONDS] [--protos DIR] [--chromium PATH] [--ignore-errors] [--background R,G,B] [--time]\n');
   process.exit(2);
 }
 
@@ -52,8 +58,16 @@ const opt = {
   protos: path.resolve(here, '../../formats/vrml/protos'),
   chromium: process.env.CHROMIUM || '/usr/bin/chromium',
   ignoreErrors: false,
+  background: null, // [r, g, b] in 0..1, or null for white
+  time: false,
 };
 const positional = [];
+// "R,G,B" with components in 0..1, or in 0..255 when any exceeds 1.
+function parseColour(text) {
+  const c = text.split(',').map(Number);
+  if (c.length !== 3 || c.some((v) => !Number.isFinite(v) || v < 0 || v > 255)) usage(`--background needs R,G,B: ${text}`);
+  return c.some((v) => v > 1) ? c.map((v) => v / 255) : c;
+}
 {
   const a = process.argv.slice(2);
   for (let i = 0; i < a.length; ++i) {
@@ -66,6 +80,8 @@ const positional = [];
     else if (arg === '--protos') opt.protos = path.resolve(value());
     else if (arg === '--chromium') opt.chromium = value();
     else if (arg === '--ignore-errors') opt.ignoreErrors = true;
+    else if (arg === '--time') opt.time = true;
+    else if (arg === '--background') opt.background = parseColour(value());
     else if (arg === '-h' || arg === '--help') usage();
     else if (arg.startsWith('--')) usage(`unknown option ${arg}`);
     else positional.push(arg);
@@ -102,6 +118,9 @@ const mime = {
   '.json': 'application/json',
   '.wrl': 'model/vrml',
   '.x3dv': 'model/x3d+vrml',
+  '.wrz': 'model/vrml',         // gzip'd; X_ITE inflates by content
+  '.x3dvz': 'model/x3d+vrml',
+  '.x3dz': 'model/x3d+xml',
   '.x3d': 'model/x3d+xml',
   '.x3dj': 'model/x3d+json',
   '.gz': 'application/gzip',
@@ -116,11 +135,14 @@ const mime = {
   '.wasm': 'application/wasm',
 };
 
+const pageColour = opt.background
+  ? `rgb(${opt.background.map((v) => Math.round(v * 255)).join(',')})`
+  : '#ffffff';
 const page_html = `<!DOCTYPE html>
 <html><head><meta charset="utf-8"><title>render_xite</title>
 <style>
-html, body { margin: 0; padding: 0; background: #ffffff; overflow: hidden; }
-x3d-canvas { display: block; width: ${opt.width}px; height: ${opt.height}px; background: #ffffff; }
+html, body { margin: 0; padding: 0; background: ${pageColour}; overflow: hidden; }
+x3d-canvas { display: block; width: ${opt.width}px; height: ${opt.height}px; background: ${pageColour}; }
 </style>
 <script src="/x_ite/x_ite.min.js"></script>
 </head><body>
@@ -215,7 +237,7 @@ try {
 
   await page.goto(`${origin}/`, { waitUntil: 'load' });
   const sceneURL = `${origin}/scene/${encodeURIComponent(path.basename(inFile))}`;
-  const loaded = await page.evaluate(async (url) => {
+  const loaded = await page.evaluate(async ({ url, sky }) => {
     const canvas = document.getElementById('canvas');
     const X3D = window.X3D;
     if (!X3D) return { ok: false, error: 'X_ITE did not load' };
@@ -223,29 +245,35 @@ try {
     // Show the file's Viewpoint exactly: X_ITE's default "straighten horizon" would roll
     // a Viewpoint whose up direction is not +Y.
     browser.setBrowserOption('StraightenHorizon', false);
+    const start = performance.now();
     try {
       await browser.loadURL(new X3D.MFString(url));
     } catch (e) {
       return { ok: false, error: `X_ITE failed to load the scene: ${e?.message ?? e}` };
     }
-    // Fixed white background when the file binds none: X_ITE's default Background is
+    const loadSeconds = (performance.now() - start) / 1000;
+    // Fixed white (or --background) sky when the file binds no Background: X_ITE's default Background is
     // black (the X3D default skyColor). Uses X_ITE internals; harmless if they change,
     // compare_images.mjs finds the background colour by itself.
-    let whiteBackground = false;
+    let defaultBackgroundSet = false;
     try {
       const layer = browser.getActiveLayer?.();
       const background = layer?.getBackground?.();
       if (background && background === layer.defaultBackground) {
-        background._skyColor = new X3D.MFColor(new X3D.SFColor(1, 1, 1));
-        whiteBackground = true;
+        background._skyColor = new X3D.MFColor(new X3D.SFColor(sky[0], sky[1], sky[2]));
+        defaultBackgroundSet = true;
       }
     } catch { /* keep X_ITE's default */ }
     // Let scripts, EXTERNPROTO instances and geometry settle: a few rendered frames.
-    for (let i = 0; i < 4; ++i) await browser.nextFrame();
+    await browser.nextFrame();
+    const firstFrameSeconds = (performance.now() - start) / 1000;
+    for (let i = 0; i < 3; ++i) await browser.nextFrame();
     await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
     const scene = browser.currentScene;
-    return { ok: true, rootNodes: scene ? scene.rootNodes.length : 0, whiteBackground };
-  }, sceneURL);
+    return { ok: true, rootNodes: scene ? scene.rootNodes.length : 0, defaultBackgroundSet, loadSeconds, firstFrameSeconds };
+  }, { url: sceneURL, sky: opt.background ?? [1, 1, 1] });
+  if (loaded.ok && opt.time)
+    process.stdout.write(`render_xite: time load ${loaded.loadSeconds.toFixed(3)} first-frame ${loaded.firstFrameSeconds.toFixed(3)}\n`);
 
   if (!loaded.ok) errors.unshift(loaded.error);
   if (errors.length === 0 || (opt.ignoreErrors && loaded.ok)) {

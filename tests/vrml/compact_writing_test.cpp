@@ -5,6 +5,7 @@
 #include <regex>
 
 #include "core/bounding_box.hpp"
+#include "analysis/tessellation_hints.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 #include "formats/vrml/vrml_writer.hpp"
 #include "scene_comparison.hpp"
@@ -96,6 +97,42 @@ TEST(CompactWriting, PolygonsAreOneFlatShadedFaceSetAndReadBackAsTheirFans) {
         << text;
     EXPECT_EQ(text.find("creaseAngle"), std::string::npos);
     vrml_test::expect_same_scene(scene, parse_vrml(text, "polygons"), o);
+  }
+}
+
+}  // namespace
+}  // namespace cadnurbs
+
+namespace cadnurbs {
+namespace {
+
+// uTessellation / vTessellation / tessellation as analysis/tessellation_hints computes them for the
+// display deviation, in the surface's node of either dialect (VRML97: NurbsSurface), and none at 0.
+TEST(CompactWriting, TessellationHintsAreWrittenForTheDisplayDeviation) {
+  TrimmedSurface face = vrml_test::trimmed_plate();
+  face.surface = vrml_test::quarter_cylinder();
+  const Scene scene = vrml_test::single_shape_scene(face, "");
+  const double d = 1e-4 * scene_bounding_box(scene).diagonal().norm();
+  const TessellationHints expected = tessellation_hints(face, d);
+  ASSERT_GT(expected.u + expected.v, 0);  // the viewers' default is too coarse at this deviation
+  for (auto encoding : {VrmlEncoding::vrml97, VrmlEncoding::x3d_classic, VrmlEncoding::x3d_xml}) {
+    VrmlWriteOptions options = with_encoding(encoding);
+    options.display_deviation = d;
+    options.tessellation_hints = &tessellation_hints;
+    const std::string text = format_vrml(scene, options);
+    const bool xml = encoding == VrmlEncoding::x3d_xml;
+    auto field = [&](const std::string& name, int value) {
+      return xml ? name + "='" + std::to_string(value) + "'" : name + " " + std::to_string(value);
+    };
+    if (expected.u > 0) EXPECT_EQ(count(text, field("uTessellation", expected.u)), 1u) << text;
+    if (expected.v > 0) EXPECT_EQ(count(text, field("vTessellation", expected.v)), 1u) << text;
+    for (size_t k = 0; k < expected.trim_segments[0].size(); ++k)
+      if (expected.trim_segments[0][k] > 0)
+        EXPECT_GE(count(text, field("tessellation", expected.trim_segments[0][k])), 1u) << text;
+    EXPECT_EQ(parse_vrml(text, "hinted").root.shapes.size(), 1u);
+    options.display_deviation = 0;
+    const std::string plain = format_vrml(scene, options);
+    EXPECT_FALSE(std::regex_search(plain, std::regex("essellation[ =']+[0-9]"))) << plain;
   }
 }
 

@@ -51,7 +51,21 @@ TEST(ProtoLibrary, ExternProtoDropsDefaultsAndListsUrnsThenUrl) {
             " field SFInt32 count\n"
             " field MFVec3f points\n"
             " eventOut SFBool done\n"
-            "] [\"urn:web3d:vrml97:node:Alpha\" \"urn:inet:blaxxun.com:node:Alpha\" \"lib.wrl#Alpha\"]\n");
+            "] [\"urn:inet:blaxxun.com:node:Alpha\" \"lib.wrl#Alpha\"]\n");
+}
+
+TEST(ProtoLibrary, ExternProtoUrnsKeepView3dsceneOffItsX3DNodes) {
+  // view3dscene maps "urn:web3d:vrml97:node:<Name>" to its built-in node of that name: wanted where
+  // that node has our fields (NurbsSurface, NurbsGroup), a parse error for NurbsCurve2D and
+  // Polyline2D (its X3D nodes, other fields), nothing drawn for TrimmedSurface and Contour2D.
+  for (const auto& proto : nurbs_protos()) {
+    const std::string d = externproto_declaration(proto, "cadnurbs-nurbs-protos.wrl");
+    const bool castle = d.find("\"urn:web3d:vrml97:node:" + proto.name + "\"") != std::string::npos;
+    EXPECT_EQ(castle, proto.name == "NurbsSurface" || proto.name == "NurbsGroup") << d;
+    EXPECT_NE(d.find("\"urn:inet:blaxxun.com:node:" + proto.name + "\" \"cadnurbs-nurbs-protos.wrl#" + proto.name + "\"]"),
+              std::string::npos)
+        << d;
+  }
 }
 
 TEST(ProtoLibrary, RefusesTextBreakingTheContract) {

@@ -1,4 +1,4 @@
-#include "formats/vrml/x3d_node.hpp"
+#include "formats/vrml/node_graph.hpp"
 
 namespace cadnurbs {
 
