@@ -7,10 +7,7 @@
 
 #include "compact_exactness.hpp"
 #include "corpus_manifest.hpp"
-#include "core/bounding_box.hpp"
-#include "core/length_unit.hpp"
 #include "formats/step/step_reader.hpp"
-#include "formats/vrml/vrml_reader.hpp"
 
 namespace cadnurbs::test {
 namespace {
@@ -59,25 +56,6 @@ TEST_P(LibraryCompact, SameSurfacesAsExactNurbs) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Library, LibraryCompact, ::testing::ValuesIn(kLibraryParts),
-                         [](const auto& info) { return corpus_test_name(info.param); });
-
-// --units kicad (0.1 inch) puts a part where KiCad's own mesh of it is: the bounding boxes of the STEP in
-// that unit and of the .wrl KiCad ships agree within 1 % of the part's size, corner by corner.
-class LibraryKicadUnits : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(LibraryKicadUnits, OverlaysTheShippedMesh) {
-  const std::string& part = GetParam();
-  const std::string family = part.substr(0, part.find('/')), name = part.substr(part.find('/') + 1);
-  const std::string stem = library_folder() + "/" + family + ".3dshapes/" + name;
-  ASSERT_TRUE(std::filesystem::exists(stem + ".step")) << stem << ".step (scripts/fetch-part-library.sh fetches it)";
-  const auto ours = scene_bounding_box(in_unit(read_step(stem + ".step").scene, *length_unit_named("kicad")));
-  const auto kicad = scene_bounding_box(read_vrml(stem + ".wrl"));
-  const double size = kicad.diagonal().norm();
-  EXPECT_LE((ours.min() - kicad.min()).cwiseAbs().maxCoeff(), 0.01 * size) << name;
-  EXPECT_LE((ours.max() - kicad.max()).cwiseAbs().maxCoeff(), 0.01 * size) << name;
-}
-
-INSTANTIATE_TEST_SUITE_P(Library, LibraryKicadUnits, ::testing::ValuesIn(kLibraryParts),
                          [](const auto& info) { return corpus_test_name(info.param); });
 
 }  // namespace
