@@ -15,7 +15,7 @@ namespace cadnurbs::test {
 namespace {
 
 const std::vector<std::string> kLong = {"step/linkrods.step", "step/11752.stp", "step/Ventilator.stp",
-                                        "iges/impeller.igs", "iges/wing.iges"};
+                                        "iges/impeller.igs", "iges/wing.iges", "iges/goteborg.iges"};
 
 std::vector<std::string> corpus_files(bool long_ones) {
   std::vector<std::string> out;
