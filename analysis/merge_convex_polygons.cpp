@@ -2,19 +2,9 @@
 
 #include <map>
 
+#include "core/polygon_2d.hpp"
+
 namespace cadnurbs {
-
-namespace {
-
-// b turns left (or goes straight within `tolerance`) on the way a -> b -> c.
-bool convex_corner(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c, double tolerance) {
-  const Eigen::Vector2d ab = b - a, bc = c - b;
-  const double length = (c - a).norm();
-  const double cross = ab.x() * bc.y() - ab.y() * bc.x();
-  return length == 0.0 || cross / length >= -tolerance;
-}
-
-}  // namespace
 
 std::vector<std::vector<int>> merge_convex_polygons(const std::vector<Eigen::Vector2d>& points,
                                                     const std::vector<std::array<int, 3>>& triangles,

@@ -5,48 +5,39 @@
 #include "analysis/join_straight_trim_runs.hpp"
 #include "analysis/merge_convex_polygons.hpp"
 #include "analysis/triangulate_polygon.hpp"
+#include "core/polygon_2d.hpp"
 
 namespace cadnurbs {
 
 namespace {
 
-bool affine_surface(const NurbsSurface& s, double tolerance) {
+// One bilinear patch (order 2 x 2, 2 x 2 control points) whose weights, if any, are all equal: a
+// polynomial bilinear map, the only kind the two tests below accept.
+bool polynomial_bilinear(const NurbsSurface& s) {
   if (s.u_order != 2 || s.v_order != 2 || s.u_count != 2 || s.v_count != 2) return false;
   if (s.is_rational())
     for (double w : s.weights)
       if (std::abs(w - s.weights[0]) > 1e-12 * s.weights[0]) return false;
-  // Bilinear with P00 + P11 = P10 + P01 is affine.
-  return (s.point(0, 0) + s.point(1, 1) - s.point(1, 0) - s.point(0, 1)).norm() <= tolerance;
+  return true;
 }
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-double signed_area(const std::vector<Eigen::Vector2d>& polygon) {
-  double area = 0.0;
-  for (size_t i = 0; i < polygon.size(); ++i) area += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
-  return 0.5 * area;
+bool affine_surface(const NurbsSurface& s, double tolerance) {
+  // Bilinear with P00 + P11 = P10 + P01 is affine.
+  return polynomial_bilinear(s) && (s.point(0, 0) + s.point(1, 1) - s.point(1, 0) - s.point(0, 1)).norm() <= tolerance;
 }
 
 // Counter-clockwise and convex: no corner turns right by more than `tolerance` off the straight line.
 bool convex(const std::vector<Eigen::Vector2d>& polygon, double tolerance) {
   const size_t n = polygon.size();
-  for (size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d& a = polygon[(i + n - 1) % n];
-    const Eigen::Vector2d& b = polygon[i];
-    const Eigen::Vector2d& c = polygon[(i + 1) % n];
-    const double length = (c - a).norm();
-    if (length > 0.0 && cross(b - a, c - b) / length < -tolerance) return false;
-  }
+  for (size_t i = 0; i < n; ++i)
+    if (!convex_corner(polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n], tolerance)) return false;
   return true;
 }
 
 // A bilinear patch whose four corners lie in one plane (within `tolerance`): planar, but not an affine
 // map when it is no parallelogram, so only its iso-lines are straight in 3D.
 bool planar_bilinear(const NurbsSurface& s, double tolerance) {
-  if (s.u_order != 2 || s.v_order != 2 || s.u_count != 2 || s.v_count != 2) return false;
-  if (s.is_rational())
-    for (double w : s.weights)
-      if (std::abs(w - s.weights[0]) > 1e-12 * s.weights[0]) return false;
+  if (!polynomial_bilinear(s)) return false;
   const Eigen::Vector3d normal = (s.point(1, 0) - s.point(0, 0)).cross(s.point(0, 1) - s.point(0, 0));
   if (normal.norm() == 0.0) return false;
   return std::abs(normal.normalized().dot(s.point(1, 1) - s.point(0, 0))) <= tolerance;
@@ -78,7 +69,7 @@ std::optional<std::vector<std::vector<Eigen::Vector2d>>> straight_loops(const Tr
         if (polygon.empty() || (p - polygon.back()).norm() > uv_tolerance) polygon.push_back(p);
     }
     while (polygon.size() > 1 && (polygon.front() - polygon.back()).norm() <= uv_tolerance) polygon.pop_back();
-    if (polygon.size() < 3 || std::abs(signed_area(polygon)) <= uv_tolerance * uv_tolerance) return std::nullopt;
+    if (polygon.size() < 3 || std::abs(polygon_signed_area(polygon)) <= uv_tolerance * uv_tolerance) return std::nullopt;
     loops.push_back(std::move(polygon));
   }
   return loops;
@@ -98,7 +89,7 @@ std::optional<PolygonMesh> planar_face_polygons(const TrimmedSurface& face, doub
   PolygonMesh mesh;
   if (loops->size() == 1) {
     std::vector<Eigen::Vector2d> polygon = (*loops)[0];
-    if (signed_area(polygon) < 0) std::reverse(polygon.begin(), polygon.end());
+    if (polygon_signed_area(polygon) < 0) std::reverse(polygon.begin(), polygon.end());
     // A non-affine patch maps only iso-lines to straight lines, and one convex piece to one.
     const bool exact = affine || along_iso_lines(polygon, uv_tolerance);
     if (exact && convex(polygon, uv_tolerance)) {

@@ -816,18 +816,26 @@ class Tessellator {
   const TrimSegment& segment(const CurveUse& u) const { return faces_[u.face].loops[u.loop].segments[u.segment]; }
 
   void find_degenerate_curves() {
+    // Whether every segment of a loop lies within D/2 of its start, asked once per (face, loop).
+    std::map<std::pair<int, int>, bool> tiny_loops;
+    auto loop_is_tiny = [&](int fi, int li) {
+      auto [it, fresh] = tiny_loops.emplace(std::pair{fi, li}, false);
+      if (fresh) {
+        const Face& f = faces_[fi];
+        const auto& segments = f.loops[li].segments;
+        it->second = std::all_of(segments.begin(), segments.end(),
+                                 [&](const TrimSegment& s) { return is_degenerate_segment(*f.eval, s, 0.5 * d_); });
+      }
+      return it->second;
+    };
     for (auto& c : curves_) {
       if (c.uses.empty()) continue;
       const CurveUse& u = c.uses.front();
       // A gap closure shorter than D/2 is one vertex: sampled on its own it would leave a crack
       // beside the neighbouring face (Ventilator.stp). A loop made only of such segments closes no
       // gap: a small hole read back from a file that names no edges (11752.stp) stays a hole.
-      const Face& f = faces_[u.face];
-      const auto& loop = f.loops[u.loop].segments;
-      const bool gap_closure = c.unnamed && !std::all_of(loop.begin(), loop.end(), [&](const TrimSegment& s) {
-        return is_degenerate_segment(*f.eval, s, 0.5 * d_);
-      });
-      c.degenerate = is_degenerate_segment(*f.eval, segment(u), (gap_closure ? 0.5 : 1e-3) * d_);
+      const bool gap_closure = c.unnamed && !loop_is_tiny(u.face, u.loop);
+      c.degenerate = is_degenerate_segment(*faces_[u.face].eval, segment(u), (gap_closure ? 0.5 : 1e-3) * d_);
     }
   }
 

@@ -560,15 +560,15 @@ def main():
     cache_path = args.out / "library_sizes.jsonl"
     cache = {} if args.fresh else load_cache(cache_path)
     keys = {p: part_key(p[1], binary_fp, kinds_run, args.timeout) for p in parts}
-    todo = [p for p in parts if keys[p] not in cache]
-    print(f"library_sizes: {len(parts)} parts, {len(parts) - len(todo)} measured before, {len(todo)} to do; "
+    to_measure = [p for p in parts if keys[p] not in cache]
+    print(f"library_sizes: {len(parts)} parts, {len(parts) - len(to_measure)} measured before, {len(to_measure)} to do; "
           f"columns run: {', '.join(kinds_run)}", file=sys.stderr)
 
     lock = threading.Lock()
     done = 0
     with open(cache_path, "a") as cache_file, \
             concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-        futures = {pool.submit(measure_part, args, f, s, kinds_run): (f, s) for f, s in todo}
+        futures = {pool.submit(measure_part, args, f, s, kinds_run): (f, s) for f, s in to_measure}
         for fut in concurrent.futures.as_completed(futures):
             p = futures[fut]
             try:
@@ -581,8 +581,8 @@ def main():
                 cache_file.write(json.dumps({"key": keys[p], "record": rec}) + "\n")
                 cache_file.flush()
                 done += 1
-                if done % 25 == 0 or done == len(todo):
-                    print(f"library_sizes: {done}/{len(todo)} parts ({(time.perf_counter() - t_run) / 60:.1f} min)",
+                if done % 25 == 0 or done == len(to_measure):
+                    print(f"library_sizes: {done}/{len(to_measure)} parts ({(time.perf_counter() - t_run) / 60:.1f} min)",
                           file=sys.stderr)
     records = [cache[keys[p]] for p in parts]
 

@@ -1,5 +1,7 @@
 #include "core/trimmed_surface.hpp"
 
+#include "core/polygon_2d.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -43,16 +45,7 @@ std::vector<Eigen::Vector2d> loop_polygon(const TrimLoop& loop, int samples_per_
   return out;
 }
 
-double loop_signed_area(const TrimLoop& loop) {
-  const auto poly = loop_polygon(loop);
-  double area = 0.0;
-  for (size_t i = 0; i < poly.size(); ++i) {
-    const auto& a = poly[i];
-    const auto& b = poly[(i + 1) % poly.size()];
-    area += a.x() * b.y() - b.x() * a.y();
-  }
-  return 0.5 * area;
-}
+double loop_signed_area(const TrimLoop& loop) { return polygon_signed_area(loop_polygon(loop)); }
 
 TrimLoop reversed(const TrimLoop& loop) {
   TrimLoop out;

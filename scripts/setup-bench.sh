@@ -6,17 +6,5 @@ set -euo pipefail
 
 debian_packages=(freecad python3 gzip)
 
-sudo_if_needed() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
-
-missing=()
-for p in "${debian_packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "setup-bench: installing ${missing[*]}"
-  sudo_if_needed apt-get update -q
-  sudo_if_needed env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
-else
-  echo "setup-bench: Debian packages present"
-fi
+"$(dirname "$0")/install-debian-packages.sh" setup-bench "${debian_packages[@]}"
 command -v freecadcmd >/dev/null || { echo "setup-bench: freecadcmd not found after installing freecad" >&2; exit 1; }

@@ -15,22 +15,11 @@ debian_packages=(
   view3dscene xvfb xauth chromium fonts-dejavu-core
 )
 
-sudo_if_needed() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
-
-missing=()
-for p in "${debian_packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
+# node/npm may come from elsewhere than Debian; the packages only when the commands are missing.
 if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
-  missing+=(nodejs npm)
+  debian_packages+=(nodejs npm)
 fi
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "setup: installing ${missing[*]}"
-  sudo_if_needed apt-get update -q
-  sudo_if_needed env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
-else
-  echo "setup: Debian packages present"
-fi
+"$here/scripts/install-debian-packages.sh" setup "${debian_packages[@]}"
 
 # Viewer test drivers (x_ite, playwright-core), pinned by package-lock.json.
 viewer_dir="$here/tests/viewers"

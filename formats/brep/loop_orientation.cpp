@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 
+#include "core/polygon_2d.hpp"
+
 namespace cadnurbs {
 
 namespace {
@@ -16,12 +18,8 @@ struct SampledLoop {
 SampledLoop sample(const TrimLoop& loop) {
   SampledLoop s;
   s.polygon = loop_polygon(loop, 8);
-  for (size_t i = 0; i < s.polygon.size(); ++i) {
-    const auto& a = s.polygon[i];
-    const auto& b = s.polygon[(i + 1) % s.polygon.size()];
-    s.signed_area += 0.5 * (a.x() * b.y() - b.x() * a.y());
-    s.box.extend(a);
-  }
+  s.signed_area = polygon_signed_area(s.polygon);
+  for (const auto& p : s.polygon) s.box.extend(p);
   return s;
 }
 
