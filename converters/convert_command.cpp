@@ -95,6 +95,7 @@ int run_convert(const std::vector<std::string>& args) {
 
   const bool homogeneous = !a.has("euclidean");
   const BrepTranslation loaded = load_scene(in, homogeneous);
+  for (const auto& line : loaded.repairs) std::cerr << in << ": " << line << "\n";
   for (const auto& f : loaded.fallbacks)
     std::cerr << in << ": " << f.node << " face " << f.face_index << " (" << f.surface_type
               << ") written as a mesh: " << f.reason << "\n";

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "analysis/tessellation_hints.hpp"
+#include "core/repair_trimming_loops.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/iges/iges_reader.hpp"
 #include "formats/iges/iges_writer.hpp"
@@ -150,7 +151,11 @@ const FileFormat& output_format(const std::string& path) {
 }
 
 BrepTranslation load_scene(const std::string& path, bool homogeneous_control_points) {
-  return input_format(path).read(path, homogeneous_control_points);
+  BrepTranslation loaded = input_format(path).read(path, homogeneous_control_points);
+  // The one check of trimming loops before any writer or tessellation (STEP/IGES faces passed it
+  // already, face by face, and are left as they are).
+  for (auto& line : repair_trimming_loops(loaded.scene)) loaded.repairs.push_back(std::move(line));
+  return loaded;
 }
 
 Scene read_scene(const std::string& path, bool homogeneous_control_points) {

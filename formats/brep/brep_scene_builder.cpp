@@ -8,6 +8,7 @@
 #include <TopoDS.hxx>
 #include <algorithm>
 
+#include "core/repair_trimming_loops.hpp"
 #include "formats/brep/face_mesh.hpp"
 #include "formats/brep/face_to_trimmed_surface.hpp"
 #include "formats/brep/occt_errors.hpp"
@@ -33,7 +34,10 @@ const BrepSceneBuilder::Converted& BrepSceneBuilder::convert(const TopoDS_Face& 
   result.surface_type = surface_type_name(face);
   try {
     OCC_CATCH_SIGNALS
-    result.geometry = face_to_trimmed_surface(face, edges_);
+    TrimmedSurface trimmed = face_to_trimmed_surface(face, edges_);
+    // The one check of loops every output sees (core/repair_trimming_loops): what it refuses is meshed.
+    result.repairs = repair_trimming_loops(trimmed, "face");
+    result.geometry = std::move(trimmed);
   } catch (const Standard_Failure& failure) {
     result.fallback_reason = occt_failure_text(failure);
   } catch (const std::exception& error) {
@@ -63,6 +67,8 @@ void BrepSceneBuilder::add_faces(SceneNode& node, const std::string& node_path, 
     const int number = static_cast<int>(i) + 1;
     Shape shape;
     shape.source_entity = "face " + std::to_string(number);
+    for (const auto& what : converted.repairs)
+      repairs_.push_back(node_path + " face " + std::to_string(number) + " (" + converted.surface_type + "): " + what);
     if (!converted.fallback_reason.empty()) {
       shape.source_entity += " (mesh)";
       fallbacks_.push_back({node_path, number, converted.surface_type, converted.fallback_reason});
@@ -109,6 +115,7 @@ BrepTranslation BrepSceneBuilder::finish(Scene scene) {
   BrepTranslation out;
   out.scene = std::move(scene);
   out.fallbacks = std::move(fallbacks_);
+  out.repairs = std::move(repairs_);
   out.face_count = face_count_;
   out.degenerated_edges = edges_.degenerated();
   return out;

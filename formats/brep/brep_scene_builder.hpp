@@ -43,6 +43,7 @@ class BrepSceneBuilder {
     Geometry geometry;
     std::string surface_type;
     std::string fallback_reason;  // empty: a trimmed NURBS
+    std::vector<std::string> repairs;  // what repair_trimming_loops did to its loops
   };
   const Converted& convert(const TopoDS_Face& face);
   void add_faces(SceneNode& node, const std::string& node_path, const std::vector<TopoDS_Face>& faces,
@@ -51,6 +52,7 @@ class BrepSceneBuilder {
   double deflection_;
   EdgeNumbering edges_;
   std::vector<FaceFallback> fallbacks_;
+  std::vector<std::string> repairs_;
   int face_count_ = 0;
   std::vector<Converted> converted_;
   NCollection_DataMap<TopoDS_Shape, size_t, TopTools_OrientedShapeMapHasher> converted_index_;

@@ -19,6 +19,9 @@ struct FaceFallback {
 struct BrepTranslation {
   Scene scene;                          // millimetres; scene.source_unit is the file's unit
   std::vector<FaceFallback> fallbacks;  // one per face written as a mesh, in scene order
+  // One line per repair of a face's trimming loops (repair_trimming_loops), "PATH face N (TYPE): what";
+  // load_scene adds those of any other input.
+  std::vector<std::string> repairs;
   int face_count = 0;                   // faces in the scene: trimmed NURBS + fallbacks
   // Indexed by TrimEdgeRef::edge: true for a degenerated edge (a pole of a sphere, the apex of a cone),
   // whose 3D image is a single point.

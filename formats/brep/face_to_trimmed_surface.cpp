@@ -162,6 +162,14 @@ std::string number_text(double x) {
   return out.str();
 }
 
+// The surface point at uv moved onto the domain, as every later step evaluates it: OCCT extrapolates
+// outside, which made a (u,v) gap of 5e-6 just past a domain's edge "3.34e+03 mm" in 3D.
+gp_Pnt clamped_value(const Handle(Geom_BSplineSurface)& surface, const Eigen::Vector2d& uv) {
+  Standard_Real u0, u1, v0, v1;
+  surface->Bounds(u0, u1, v0, v1);
+  return surface->Value(std::clamp(uv.x(), u0, u1), std::clamp(uv.y(), v0, v1));
+}
+
 // The wire as a closed core loop: gaps within the 3D tolerance are closed, by moving the segment ends
 // when small in (u, v), by a straight bridge when the gap is long in (u, v) but one point in 3D.
 TrimLoop close_wire(const WireUses& uses, const Handle(Geom_BSplineSurface)& surface, double domain_size,
@@ -186,8 +194,8 @@ TrimLoop close_wire(const WireUses& uses, const Handle(Geom_BSplineSurface)& sur
     // The vertex joins the two edges; each pcurve may be off by its edge's tolerance.
     // Both pcurve ends lie within the tolerance of the vertex, so up to twice it apart.
     const double tolerance = 2 * std::max(uses[i].end_tolerance, uses[next].edge_tolerance);
-    const gp_Pnt p = surface->Value(end.x(), end.y());
-    const double distance = p.Distance(surface->Value(start.x(), start.y()));
+    const gp_Pnt p = clamped_value(surface, end);
+    const double distance = p.Distance(clamped_value(surface, start));
     if (distance > tolerance)
       throw FaceConversionError("wire " + std::to_string(wire_number) + " does not close: gap " + number_text(gap) +
                                 " in (u,v) between its segments " + std::to_string(i + 1) + " and " +
@@ -199,7 +207,7 @@ TrimLoop close_wire(const WireUses& uses, const Handle(Geom_BSplineSurface)& sur
     }
     for (int k = 1; k < 8; ++k) {
       const Eigen::Vector2d q = end + (start - end) * (k / 8.0);
-      if (surface->Value(q.x(), q.y()).Distance(p) > tolerance)
+      if (clamped_value(surface, q).Distance(p) > tolerance)
         throw FaceConversionError("wire " + std::to_string(wire_number) + " does not close: gap " +
                                   number_text(gap) + " in (u,v) between its segments " + std::to_string(i + 1) +
                                   " and " + std::to_string(next + 1) + " is not a degenerated point");

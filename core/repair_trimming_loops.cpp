@@ -1,0 +1,217 @@
+#include "core/repair_trimming_loops.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include "core/geometry_error.hpp"
+#include "core/polygon_2d.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+// Excursions up to this share of the domain are round-off (1e-16 is common): repaired without a word.
+constexpr double kRoundOff = 1e-12;
+
+struct Domain {
+  double u0, u1, v0, v1;
+  double du() const { return u1 - u0; }
+  double dv() const { return v1 - v0; }
+  // How far p lies outside, as a share of the domain's size in that direction (0 inside).
+  double outside(const Eigen::Vector2d& p) const {
+    const double eu = std::max({u0 - p.x(), p.x() - u1, 0.0}) / du();
+    const double ev = std::max({v0 - p.y(), p.y() - v1, 0.0}) / dv();
+    return std::max(eu, ev);
+  }
+  Eigen::Vector2d clamped(const Eigen::Vector2d& p) const {
+    return {std::clamp(p.x(), u0, u1), std::clamp(p.y(), v0, v1)};
+  }
+};
+
+std::string short_number(double x) {
+  std::ostringstream out;
+  out.precision(3);
+  out << x;
+  return out.str();
+}
+
+// The points that define a segment (2D control points or polyline points), x and y only.
+template <class Visit>
+void for_each_defining_point(TrimSegment& segment, Visit&& visit) {
+  if (auto* c = std::get_if<NurbsCurve>(&segment)) {
+    for (auto& p : c->points) {
+      Eigen::Vector2d q = p.head<2>();
+      visit(q);
+      p.head<2>() = q;
+    }
+  } else {
+    for (auto& p : std::get<Polyline2D>(segment).points) visit(p);
+  }
+}
+
+double orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
+// Whether two non-adjacent chords of the closed polygon cross properly (each one's ends strictly on
+// both sides of the other's line, beyond `eps` of round-off). Chords sorted by their smallest u and
+// swept, so only chords whose u ranges overlap are compared.
+bool crosses_itself(const std::vector<Eigen::Vector2d>& poly, double eps) {
+  const size_t n = poly.size();
+  if (n < 4) return false;
+  auto lo = [&](size_t i) { return std::min(poly[i].x(), poly[(i + 1) % n].x()); };
+  auto hi = [&](size_t i) { return std::max(poly[i].x(), poly[(i + 1) % n].x()); };
+  std::vector<size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return lo(a) < lo(b); });
+  std::vector<size_t> active;
+  for (size_t i : order) {
+    const double start = lo(i);
+    active.erase(std::remove_if(active.begin(), active.end(), [&](size_t j) { return hi(j) < start; }), active.end());
+    const Eigen::Vector2d &a = poly[i], &b = poly[(i + 1) % n];
+    for (size_t j : active) {
+      if ((i + 1) % n == j || (j + 1) % n == i) continue;
+      const Eigen::Vector2d &c = poly[j], &d = poly[(j + 1) % n];
+      const double scale = (b - a).norm() * (d - c).norm() * eps;
+      const double o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+      const double o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+      if (((o1 > scale && o2 < -scale) || (o1 < -scale && o2 > scale)) &&
+          ((o3 > scale && o4 < -scale) || (o3 < -scale && o4 > scale)))
+        return true;
+    }
+    active.push_back(i);
+  }
+  return false;
+}
+
+// A polynomial bilinear patch (a plane, as readers write planes) extends exactly beyond its domain:
+// widens the domain to the box of every loop's defining points (which holds the loops: convex hull).
+// True when it widened it.
+bool widen_bilinear_domain(TrimmedSurface& face) {
+  NurbsSurface& s = face.surface;
+  if (s.u_order != 2 || s.v_order != 2 || s.u_count != 2 || s.v_count != 2 || s.is_rational()) return false;
+  Eigen::Vector2d lo(s.u_start(), s.v_start()), hi(s.u_end(), s.v_end());
+  const Eigen::Vector2d lo0 = lo, hi0 = hi;
+  for (auto& loop : face.loops)
+    for (auto& segment : loop.segments)
+      for_each_defining_point(segment, [&](Eigen::Vector2d& p) { lo = lo.cwiseMin(p), hi = hi.cwiseMax(p); });
+  if (lo == lo0 && hi == hi0) return false;
+  auto at = [&](double u, double v) {
+    const double a = (u - lo0.x()) / (hi0.x() - lo0.x()), b = (v - lo0.y()) / (hi0.y() - lo0.y());
+    return Eigen::Vector3d((1 - a) * (1 - b) * s.point(0, 0) + a * (1 - b) * s.point(1, 0) +
+                           (1 - a) * b * s.point(0, 1) + a * b * s.point(1, 1));
+  };
+  s.points = {at(lo.x(), lo.y()), at(hi.x(), lo.y()), at(lo.x(), hi.y()), at(hi.x(), hi.y())};
+  s.u_knots = {lo.x(), lo.x(), hi.x(), hi.x()};
+  s.v_knots = {lo.y(), lo.y(), hi.y(), hi.y()};
+  return true;
+}
+
+void repair_node(SceneNode& node, const std::string& path, std::vector<std::string>& done) {
+  for (size_t i = 0; i < node.shapes.size(); ++i) {
+    Shape& shape = node.shapes[i];
+    auto* face = std::get_if<TrimmedSurface>(&shape.geometry);
+    if (!face) continue;
+    const std::string entity =
+        path + "/" + (display_name(shape).empty() ? "shape " + std::to_string(i) : display_name(shape));
+    for (const auto& line : repair_trimming_loops(*face, entity)) done.push_back(entity + ": " + line);
+  }
+  for (size_t i = 0; i < node.children.size(); ++i) {
+    SceneNode& child = node.children[i];
+    repair_node(child, path + "/" + (display_name(child).empty() ? "node " + std::to_string(i) : display_name(child)),
+                done);
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> repair_trimming_loops(Scene& scene) {
+  std::vector<std::string> done;
+  repair_node(scene.root, display_name(scene.root).empty() ? "scene" : display_name(scene.root), done);
+  return done;
+}
+
+std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::string& entity) {
+  std::vector<std::string> done;
+  if (face.loops.empty()) return done;
+  const NurbsSurface& s = face.surface;
+  const Domain before{s.u_start(), s.u_end(), s.v_start(), s.v_end()};
+  double outside_before = 0;
+  for (const auto& loop : face.loops)
+    for (const auto& p : loop_polygon(loop)) outside_before = std::max(outside_before, before.outside(p));
+  if (outside_before > 0 && widen_bilinear_domain(face) && outside_before > kRoundOff)
+    done.push_back("trimming loops left the bilinear patch's domain by " + short_number(outside_before) +
+                   " of its size: domain widened (the patch extends exactly)");
+  const Domain domain{s.u_start(), s.u_end(), s.v_start(), s.v_end()};
+  const double domain_area = domain.du() * domain.dv();
+
+  // Loops that bound no area go first: they are dropped whatever else is wrong with them.
+  std::vector<TrimLoop> kept;
+  for (size_t k = 0; k < face.loops.size(); ++k) {
+    if (std::abs(loop_signed_area(face.loops[k])) <= 1e-12 * domain_area) {
+      done.push_back("trimming loop " + std::to_string(k) + " bounds no area: dropped");
+      continue;
+    }
+    kept.push_back(std::move(face.loops[k]));
+  }
+  if (kept.empty()) throw GeometryError(entity, "every trimming loop bounds no area: the face has no area");
+
+  for (size_t k = 0; k < kept.size(); ++k) {
+    TrimLoop& loop = kept[k];
+    auto sampled_excursion = [&] {
+      double out = 0;
+      for (const auto& p : loop_polygon(loop)) out = std::max(out, domain.outside(p));
+      return out;
+    };
+    const double sampled = sampled_excursion();
+    if (sampled > kDomainSlack)
+      throw GeometryError(entity, "trimming loop " + std::to_string(k) + " leaves the surface's domain by " +
+                                      short_number(sampled) + " of its size (more than " +
+                                      short_number(kDomainSlack) + " cannot be moved onto it)");
+    if (sampled > 0) {
+      // First only points about as far out as the curve: a control point further out may belong to a
+      // curve that stays inside there (an arc's control polygon near the edge).
+      auto clamp_points = [&](double limit) {
+        int moved = 0;
+        for (auto& segment : loop.segments)
+          for_each_defining_point(segment, [&](Eigen::Vector2d& p) {
+            const double e = domain.outside(p);
+            if (e > 0 && e <= limit) p = domain.clamped(p), ++moved;
+          });
+        return moved;
+      };
+      const std::vector<Eigen::Vector2d> original = loop_polygon(loop);
+      int moved = clamp_points(std::max(2 * sampled, kRoundOff));
+      double left = sampled_excursion();
+      // Then every point out by up to kDomainSlack, kept only if the loop moves by little more than
+      // it left the domain (in units of the domain's size).
+      if (left > kRoundOff) {
+        const TrimLoop first = loop;
+        const int more = clamp_points(kDomainSlack);
+        const std::vector<Eigen::Vector2d> now = loop_polygon(loop);
+        double shift = 0;
+        for (size_t i = 0; i < now.size(); ++i)
+          shift = std::max(shift, std::max(std::abs(now[i].x() - original[i].x()) / domain.du(),
+                                           std::abs(now[i].y() - original[i].y()) / domain.dv()));
+        if (shift <= 2 * sampled + kRoundOff) moved += more, left = sampled_excursion();
+        else loop = first;
+      }
+      if (sampled > kRoundOff)
+        done.push_back("trimming loop " + std::to_string(k) + " left the surface's domain by " + short_number(sampled) +
+                       " of its size: " + std::to_string(moved) + " points moved onto the domain's edge" +
+                       (left > kRoundOff ? " (" + short_number(left) + " still outside)" : ""));
+    }
+    std::vector<Eigen::Vector2d> poly = loop_polygon(loop);
+    // Repeated points (a pole's degenerate segment) make zero-length chords; they cross nothing.
+    poly.erase(std::unique(poly.begin(), poly.end()), poly.end());
+    if (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+    if (crosses_itself(poly, 1e-12))
+      throw GeometryError(entity, "trimming loop " + std::to_string(k) + " crosses itself");
+  }
+  face.loops = std::move(kept);
+  return done;
+}
+
+}  // namespace cadnurbs

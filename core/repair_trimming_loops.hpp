@@ -1,0 +1,40 @@
+#pragma once
+// The one check of a face's trimming loops that every reader's output passes before any writer or
+// tessellation sees it, so that `convert -o x.x3dv` and `convert --mesh` treat every face the same
+// way. Repairs what can be repaired with certainty; refuses the rest (the STEP/IGES path then writes
+// that face as OCCT's mesh of it, other inputs fail with the face named).
+//
+// Repairs (each reported as one line):
+//  - a loop that bounds no area (|signed area| <= 1e-12 of the domain's): dropped; it trims nothing;
+//  - a loop whose samples leave the surface's domain by at most kDomainSlack of its size: the points
+//    that define it (2D control points, polyline points) outside by up to twice that much are moved
+//    onto the domain's edge. A B-spline lies in the convex hull of its control points, so the curve
+//    moves by no more than they do, and the surface is evaluated clamped at its edge anyway. Points
+//    further out (an arc's control polygon near the edge, the arc inside) are left alone. Excursions
+//    of round-off size (1e-12 of the domain) are repaired without a report line.
+// Refusals (GeometryError(entity, reason)):
+//  - a loop further outside the domain;
+//  - a loop that crosses itself (two of its non-adjacent chords properly cross; each NURBS piece
+//    sampled 16 times per knot span, so a crossing smaller than that sampling can be missed);
+//  - a face all of whose loops bound no area.
+#include <string>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "core/trimmed_surface.hpp"
+
+namespace cadnurbs {
+
+// Largest distance, relative to the domain's size in each direction, by which a loop may leave the
+// domain and still be moved onto it (11752.stp's pcurves leave a B-spline's domain by 1.5e-3).
+constexpr double kDomainSlack = 1e-2;
+
+// Repairs `face`'s loops in place; returns what was done, one line per repair (empty: nothing).
+// Throws GeometryError(entity, reason) when the loops cannot be repaired with certainty.
+std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::string& entity);
+
+// Every trimmed surface of the scene; lines "PATH: what was done", PATH named as validate(Scene) names
+// shapes. Throws GeometryError(PATH, reason) for the first face it cannot repair.
+std::vector<std::string> repair_trimming_loops(Scene& scene);
+
+}  // namespace cadnurbs
