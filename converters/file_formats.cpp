@@ -152,9 +152,10 @@ const FileFormat& output_format(const std::string& path) {
 
 BrepTranslation load_scene(const std::string& path, bool homogeneous_control_points) {
   BrepTranslation loaded = input_format(path).read(path, homogeneous_control_points);
-  // The one check of trimming loops before any writer or tessellation (STEP/IGES faces passed it
-  // already, face by face, and are left as they are).
-  for (auto& line : repair_trimming_loops(loaded.scene)) loaded.repairs.push_back(std::move(line));
+  // The one check of trimming loops before any writer or tessellation. STEP/IGES faces (face_count > 0)
+  // passed it already, face by face, where a refused face can still be meshed by OCCT.
+  if (loaded.face_count == 0)
+    for (auto& line : repair_trimming_loops(loaded.scene)) loaded.repairs.push_back(std::move(line));
   return loaded;
 }
 
