@@ -55,10 +55,11 @@ double orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eig
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
 }
 
-// Whether two non-adjacent chords of the closed polygon cross properly (each one's ends strictly on
-// both sides of the other's line, beyond `eps` of round-off). Chords sorted by their smallest u and
-// swept, so only chords whose u ranges overlap are compared.
-bool crosses_itself(const std::vector<Eigen::Vector2d>& poly, double eps) {
+// Whether two non-adjacent chords of the closed polygon cross properly: each one's ends on both sides
+// of the other's line, farther than `tolerance` from it (a loop that only touches itself within
+// round-off, as slivers of real files do, does not cross). Chords sorted by their smallest u and swept,
+// so only chords whose u ranges overlap are compared.
+bool crosses_itself(const std::vector<Eigen::Vector2d>& poly, double tolerance) {
   const size_t n = poly.size();
   if (n < 4) return false;
   auto lo = [&](size_t i) { return std::min(poly[i].x(), poly[(i + 1) % n].x()); };
@@ -74,11 +75,11 @@ bool crosses_itself(const std::vector<Eigen::Vector2d>& poly, double eps) {
     for (size_t j : active) {
       if ((i + 1) % n == j || (j + 1) % n == i) continue;
       const Eigen::Vector2d &c = poly[j], &d = poly[(j + 1) % n];
-      const double scale = (b - a).norm() * (d - c).norm() * eps;
+      // Orientations are distances from the line times the chord's length.
+      const double ab = (b - a).norm() * tolerance, cd = (d - c).norm() * tolerance;
       const double o1 = orientation(a, b, c), o2 = orientation(a, b, d);
       const double o3 = orientation(c, d, a), o4 = orientation(c, d, b);
-      if (((o1 > scale && o2 < -scale) || (o1 < -scale && o2 > scale)) &&
-          ((o3 > scale && o4 < -scale) || (o3 < -scale && o4 > scale)))
+      if (((o1 > ab && o2 < -ab) || (o1 < -ab && o2 > ab)) && ((o3 > cd && o4 < -cd) || (o3 < -cd && o4 > cd)))
         return true;
     }
     active.push_back(i);
@@ -107,6 +108,15 @@ bool widen_bilinear_domain(TrimmedSurface& face) {
   s.u_knots = {lo.x(), lo.x(), hi.x(), hi.x()};
   s.v_knots = {lo.y(), lo.y(), hi.y(), hi.y()};
   return true;
+}
+
+// The loop's polygon without repeated points (a pole's degenerate segment makes zero-length chords,
+// which cross nothing).
+std::vector<Eigen::Vector2d> distinct_polygon(const TrimLoop& loop, int samples_per_span) {
+  std::vector<Eigen::Vector2d> poly = loop_polygon(loop, samples_per_span);
+  poly.erase(std::unique(poly.begin(), poly.end()), poly.end());
+  if (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+  return poly;
 }
 
 void repair_node(SceneNode& node, const std::string& path, std::vector<std::string>& done) {
@@ -203,11 +213,10 @@ std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::
                        " of its size: " + std::to_string(moved) + " points moved onto the domain's edge" +
                        (left > kRoundOff ? " (" + short_number(left) + " still outside)" : ""));
     }
-    std::vector<Eigen::Vector2d> poly = loop_polygon(loop);
-    // Repeated points (a pole's degenerate segment) make zero-length chords; they cross nothing.
-    poly.erase(std::unique(poly.begin(), poly.end()), poly.end());
-    if (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
-    if (crosses_itself(poly, 1e-12))
+    // A crossing of the 16-per-span chords may be the chords' own (two pieces of the loop passing close
+    // by): only one that stays at 128 per span counts.
+    const double tolerance = kRoundOff * 1e3 * std::max(domain.du(), domain.dv());  // 1e-9 of the domain
+    if (crosses_itself(distinct_polygon(loop, 16), tolerance) && crosses_itself(distinct_polygon(loop, 128), tolerance))
       throw GeometryError(entity, "trimming loop " + std::to_string(k) + " crosses itself");
   }
   face.loops = std::move(kept);

@@ -14,8 +14,9 @@
 //    of round-off size (1e-12 of the domain) are repaired without a report line.
 // Refusals (GeometryError(entity, reason)):
 //  - a loop further outside the domain;
-//  - a loop that crosses itself (two of its non-adjacent chords properly cross; each NURBS piece
-//    sampled 16 times per knot span, so a crossing smaller than that sampling can be missed);
+//  - a loop that crosses itself (two of its non-adjacent chords properly cross, with each NURBS piece
+//    sampled 16 and again 128 times per knot span; a crossing finer than that can be missed, and a
+//    loop that only touches itself within 1e-9 of the domain does not cross);
 //  - a face all of whose loops bound no area.
 #include <string>
 #include <vector>
