@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
 
@@ -111,6 +112,13 @@ std::string format_number(double value, const NumberPrecision& precision) {
   std::string out;
   append_number(out, value, precision);
   return out;
+}
+
+std::string message_number(double value) {
+  std::ostringstream out;
+  out.precision(3);
+  out << value;
+  return out.str();
 }
 
 }  // namespace cadnurbs

@@ -23,4 +23,7 @@ std::string format_number(double value, const NumberPrecision& precision);
 // The same text appended to `out` (saves an allocation per number in large arrays).
 void append_number(std::string& out, double value, const NumberPrecision& precision);
 
+// A figure for a message to people: three significant digits ("0.000123", "3.34e+03").
+std::string message_number(double value);
+
 }  // namespace cadnurbs

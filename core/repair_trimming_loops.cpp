@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <sstream>
 
 #include "core/geometry_error.hpp"
+#include "core/number_format.hpp"
 #include "core/polygon_2d.hpp"
 
 namespace cadnurbs {
@@ -14,6 +14,9 @@ namespace {
 
 // Excursions up to this share of the domain are round-off (1e-16 is common): repaired without a word.
 constexpr double kRoundOff = 1e-12;
+// A loop crosses itself only where its chords cross by more than this share of the domain (slivers of
+// real files touch themselves within round-off).
+constexpr double kCrossingTolerance = 1e-9;
 
 struct Domain {
   double u0, u1, v0, v1;
@@ -29,13 +32,6 @@ struct Domain {
     return {std::clamp(p.x(), u0, u1), std::clamp(p.y(), v0, v1)};
   }
 };
-
-std::string short_number(double x) {
-  std::ostringstream out;
-  out.precision(3);
-  out << x;
-  return out.str();
-}
 
 // The points that define a segment (2D control points or polyline points), x and y only.
 template <class Visit>
@@ -110,10 +106,9 @@ bool widen_bilinear_domain(TrimmedSurface& face) {
   return true;
 }
 
-// The loop's polygon without repeated points (a pole's degenerate segment makes zero-length chords,
-// which cross nothing).
-std::vector<Eigen::Vector2d> distinct_polygon(const TrimLoop& loop, int samples_per_span) {
-  std::vector<Eigen::Vector2d> poly = loop_polygon(loop, samples_per_span);
+// The polygon without repeated points (a pole's degenerate segment makes zero-length chords, which
+// cross nothing).
+std::vector<Eigen::Vector2d> distinct(std::vector<Eigen::Vector2d> poly) {
   poly.erase(std::unique(poly.begin(), poly.end()), poly.end());
   if (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
   return poly;
@@ -146,40 +141,45 @@ std::vector<std::string> repair_trimming_loops(Scene& scene) {
 std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::string& entity) {
   std::vector<std::string> done;
   if (face.loops.empty()) return done;
+  // Each loop is sampled once here (16 points per span) and again only where points were moved.
+  std::vector<std::vector<Eigen::Vector2d>> polygons;
+  for (const auto& loop : face.loops) polygons.push_back(loop_polygon(loop));
   const NurbsSurface& s = face.surface;
   const Domain before{s.u_start(), s.u_end(), s.v_start(), s.v_end()};
+  auto excursion = [](const Domain& domain, const std::vector<Eigen::Vector2d>& polygon) {
+    double out = 0;
+    for (const auto& p : polygon) out = std::max(out, domain.outside(p));
+    return out;
+  };
   double outside_before = 0;
-  for (const auto& loop : face.loops)
-    for (const auto& p : loop_polygon(loop)) outside_before = std::max(outside_before, before.outside(p));
+  for (const auto& polygon : polygons) outside_before = std::max(outside_before, excursion(before, polygon));
   if (outside_before > 0 && widen_bilinear_domain(face) && outside_before > kRoundOff)
-    done.push_back("trimming loops left the bilinear patch's domain by " + short_number(outside_before) +
+    done.push_back("trimming loops left the bilinear patch's domain by " + message_number(outside_before) +
                    " of its size: domain widened (the patch extends exactly)");
   const Domain domain{s.u_start(), s.u_end(), s.v_start(), s.v_end()};
   const double domain_area = domain.du() * domain.dv();
 
   // Loops that bound no area go first: they are dropped whatever else is wrong with them.
   std::vector<TrimLoop> kept;
+  std::vector<std::vector<Eigen::Vector2d>> kept_polygons;
   for (size_t k = 0; k < face.loops.size(); ++k) {
-    if (std::abs(loop_signed_area(face.loops[k])) <= 1e-12 * domain_area) {
+    if (std::abs(polygon_signed_area(polygons[k])) <= 1e-12 * domain_area) {
       done.push_back("trimming loop " + std::to_string(k) + " bounds no area: dropped");
       continue;
     }
     kept.push_back(std::move(face.loops[k]));
+    kept_polygons.push_back(std::move(polygons[k]));
   }
   if (kept.empty()) throw GeometryError(entity, "every trimming loop bounds no area: the face has no area");
 
   for (size_t k = 0; k < kept.size(); ++k) {
     TrimLoop& loop = kept[k];
-    auto sampled_excursion = [&] {
-      double out = 0;
-      for (const auto& p : loop_polygon(loop)) out = std::max(out, domain.outside(p));
-      return out;
-    };
-    const double sampled = sampled_excursion();
+    std::vector<Eigen::Vector2d>& polygon = kept_polygons[k];
+    const double sampled = excursion(domain, polygon);
     if (sampled > kDomainSlack)
       throw GeometryError(entity, "trimming loop " + std::to_string(k) + " leaves the surface's domain by " +
-                                      short_number(sampled) + " of its size (more than " +
-                                      short_number(kDomainSlack) + " cannot be moved onto it)");
+                                      message_number(sampled) + " of its size (more than " +
+                                      message_number(kDomainSlack) + " cannot be moved onto it)");
     if (sampled > 0) {
       // First only points about as far out as the curve: a control point further out may belong to a
       // curve that stays inside there (an arc's control polygon near the edge).
@@ -192,31 +192,37 @@ std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::
           });
         return moved;
       };
-      const std::vector<Eigen::Vector2d> original = loop_polygon(loop);
+      const std::vector<Eigen::Vector2d> original = polygon;
       int moved = clamp_points(std::max(2 * sampled, kRoundOff));
-      double left = sampled_excursion();
+      polygon = loop_polygon(loop);
+      double left = excursion(domain, polygon);
       // Then every point out by up to kDomainSlack, kept only if the loop moves by little more than
       // it left the domain (in units of the domain's size).
       if (left > kRoundOff) {
         const TrimLoop first = loop;
         const int more = clamp_points(kDomainSlack);
-        const std::vector<Eigen::Vector2d> now = loop_polygon(loop);
+        std::vector<Eigen::Vector2d> now = loop_polygon(loop);
         double shift = 0;
         for (size_t i = 0; i < now.size(); ++i)
           shift = std::max(shift, std::max(std::abs(now[i].x() - original[i].x()) / domain.du(),
                                            std::abs(now[i].y() - original[i].y()) / domain.dv()));
-        if (shift <= 2 * sampled + kRoundOff) moved += more, left = sampled_excursion();
-        else loop = first;
+        if (shift <= 2 * sampled + kRoundOff) {
+          moved += more;
+          polygon = std::move(now);
+          left = excursion(domain, polygon);
+        } else {
+          loop = first;
+        }
       }
       if (sampled > kRoundOff)
-        done.push_back("trimming loop " + std::to_string(k) + " left the surface's domain by " + short_number(sampled) +
+        done.push_back("trimming loop " + std::to_string(k) + " left the surface's domain by " + message_number(sampled) +
                        " of its size: " + std::to_string(moved) + " points moved onto the domain's edge" +
-                       (left > kRoundOff ? " (" + short_number(left) + " still outside)" : ""));
+                       (left > kRoundOff ? " (" + message_number(left) + " still outside)" : ""));
     }
     // A crossing of the 16-per-span chords may be the chords' own (two pieces of the loop passing close
     // by): only one that stays at 128 per span counts.
-    const double tolerance = kRoundOff * 1e3 * std::max(domain.du(), domain.dv());  // 1e-9 of the domain
-    if (crosses_itself(distinct_polygon(loop, 16), tolerance) && crosses_itself(distinct_polygon(loop, 128), tolerance))
+    const double tolerance = kCrossingTolerance * std::max(domain.du(), domain.dv());
+    if (crosses_itself(distinct(polygon), tolerance) && crosses_itself(distinct(loop_polygon(loop, 128)), tolerance))
       throw GeometryError(entity, "trimming loop " + std::to_string(k) + " crosses itself");
   }
   face.loops = std::move(kept);

@@ -13,9 +13,9 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <sstream>
 
 #include "core/geometry_error.hpp"
+#include "core/number_format.hpp"
 #include "formats/brep/direct_face.hpp"
 #include "formats/brep/face_pcurves.hpp"
 #include "formats/brep/loop_closure.hpp"
@@ -155,13 +155,6 @@ void mirror_u(TrimLoop& loop, double a, double b) {
   }
 }
 
-std::string number_text(double x) {
-  std::ostringstream out;
-  out.precision(3);
-  out << x;
-  return out.str();
-}
-
 // The surface point at uv moved onto the domain, as every later step evaluates it: OCCT extrapolates
 // outside, which made a (u,v) gap of 5e-6 just past a domain's edge "3.34e+03 mm" in 3D.
 gp_Pnt clamped_value(const Handle(Geom_BSplineSurface)& surface, const Eigen::Vector2d& uv) {
@@ -197,10 +190,10 @@ TrimLoop close_wire(const WireUses& uses, const Handle(Geom_BSplineSurface)& sur
     const gp_Pnt p = clamped_value(surface, end);
     const double distance = p.Distance(clamped_value(surface, start));
     if (distance > tolerance)
-      throw FaceConversionError("wire " + std::to_string(wire_number) + " does not close: gap " + number_text(gap) +
+      throw FaceConversionError("wire " + std::to_string(wire_number) + " does not close: gap " + message_number(gap) +
                                 " in (u,v) between its segments " + std::to_string(i + 1) + " and " +
-                                std::to_string(next + 1) + ", " + number_text(distance) +
-                                " in 3D, above the tolerance " + number_text(tolerance));
+                                std::to_string(next + 1) + ", " + message_number(distance) +
+                                " in 3D, above the tolerance " + message_number(tolerance));
     if (gap <= 1e-4 * domain_size) {
       join_segments(out.segments[i], out.segments[next]);
       continue;
@@ -209,7 +202,7 @@ TrimLoop close_wire(const WireUses& uses, const Handle(Geom_BSplineSurface)& sur
       const Eigen::Vector2d q = end + (start - end) * (k / 8.0);
       if (clamped_value(surface, q).Distance(p) > tolerance)
         throw FaceConversionError("wire " + std::to_string(wire_number) + " does not close: gap " +
-                                  number_text(gap) + " in (u,v) between its segments " + std::to_string(i + 1) +
+                                  message_number(gap) + " in (u,v) between its segments " + std::to_string(i + 1) +
                                   " and " + std::to_string(next + 1) + " is not a degenerated point");
     }
     bridges.emplace_back(i, Polyline2D{{end, start}});

@@ -63,21 +63,15 @@ class FaultyFace : public ::testing::Test {
   }
   // The total area `cadnurbs info` prints for a file, as printed.
   std::string area_of(const std::string& path) {
-    const CommandResult r = info(path);
-    const size_t at = r.out.find("total area: ");
-    if (at == std::string::npos) return "(none) " + r.err;
-    std::istringstream in(r.out.substr(at + 12));
+    const std::string out = folder_.file("info.txt");
+    std::system((std::string(CADNURBS_EXE) + " info " + path + " >" + out + " 2>&1").c_str());
+    const std::string printed = read_file(out);
+    const size_t at = printed.find("total area: ");
+    if (at == std::string::npos) return "(none) " + printed;
+    std::istringstream in(printed.substr(at + 12));
     std::string value;
     in >> value;
     return value;
-  }
-  CommandResult info(const std::string& path) {
-    const std::string out = folder_.file("info.txt");
-    const int status = std::system((std::string(CADNURBS_EXE) + " info " + path + " >" + out + " 2>&1").c_str());
-    return {WEXITSTATUS(status), read_file(out), ""};
-  }
-  void TearDown() override {
-    if (HasFailure() && std::getenv("KEEP")) std::system(("cp -r " + folder_.path().string() + " /tmp/kept").c_str());
   }
   TemporaryFolder folder_;
 };
