@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "analysis/compact_scene.hpp"
+#include "analysis/sew_faces.hpp"
 #include "analysis/tessellate_to_deviation.hpp"
 #include "analysis/tessellate_uniform.hpp"
 #include "converters/arguments.hpp"
@@ -119,8 +120,22 @@ int run_convert(const std::vector<std::string>& args) {
     how = ", uniform " + std::to_string(steps) + " steps per span";
   } else if (mesh) {
     const double d = deviation > 0 ? deviation : 1e-3 * box.diagonal().norm();
+    // A file that names no edges (VRML/X3D, our own NURBS files) gets them back by sewing, so that its
+    // mesh is as watertight as the B-rep's; STEP/IGES faces carry the B-rep's edges already.
+    const SceneCounts counts = count_entities(scene);
+    const bool sew = loaded.face_count == 0 && counts.surfaces + counts.polygon_meshes > 0;
+    Scene faces;
+    if (sew) {
+      const SewingTolerance tolerance = sewing_tolerance(box.diagonal().norm(), d);
+      SewingReport sewing;
+      faces = sew_faces(scene, tolerance, &sewing);
+      std::cout << in << ": sewn at " << tolerance.first << " " << scene.unit.name << " (gaps up to "
+                << tolerance.largest << "; widest bridged " << sewing.widest_gap << "): " << sewing.shared_edges
+                << " shared edges, " << sewing.open_pieces << " open boundary pieces, " << sewing.cuts
+                << " pieces cut at a neighbour's vertex, " << sewing.polygon_faces << " polygons as faces\n";
+    }
     TessellationReport report;
-    written = tessellate_to_deviation(scene, d, &report);
+    written = tessellate_to_deviation(sew ? faces : scene, d, &report);
     how = ", max deviation " + std::to_string(d) + " " + scene.unit.name + "; certified " +
           std::to_string(report.certified_deviation) + ", " + std::to_string(report.uncertified_triangles) +
           " uncertified triangles, " + std::to_string(report.unshared_edge_uses) + " unshared edge uses";

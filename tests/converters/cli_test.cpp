@@ -6,6 +6,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "analysis/count_boundary_edges.hpp"
+#include "analysis/weld_exact.hpp"
+#include "converters/file_formats.hpp"
 #include "formats/common/file_io.hpp"
 #include "samples/capping_shapes.hpp"
 
@@ -210,4 +213,18 @@ TEST_F(Cli, MeshesGoToObjAndTheTessellationIsReported) {
   const std::string obj = read_file(path("screw.obj"));
   EXPECT_EQ(obj.rfind("# cadnurbs", 0), 0u);
   EXPECT_GT(std::count(obj.begin(), obj.end(), 'f'), 100);
+}
+
+TEST_F(Cli, OwnNurbsFileMeshesWatertightBySewing) {
+  // screw.step is a closed solid: its .x3dv names no edges, so `convert --mesh` sews them back (issue 9).
+  const std::string step = std::string(CADNURBS_SHARED_DIR) + "/corpus/step/screw.step";
+  ASSERT_EQ(run("convert " + step + " -o " + path("screw.x3dv")).status, 0);
+  const CommandResult r = run("convert " + path("screw.x3dv") + " --mesh -o " + path("screw.stl"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find(": 22 shared edges, 0 open boundary pieces"), std::string::npos) << r.out;
+  const Scene mesh = read_scene(path("screw.stl"));
+  ASSERT_EQ(mesh.root.shapes.size(), 1u);
+  const EdgeCounts edges = count_boundary_edges(weld_exact(std::get<TriangleMesh>(mesh.root.shapes[0].geometry)));
+  EXPECT_EQ(edges.boundary, 0);
+  EXPECT_EQ(edges.non_manifold, 0);
 }
