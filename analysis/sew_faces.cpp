@@ -352,7 +352,44 @@ UnionFind match_pieces(const std::vector<Piece>& pieces, const std::vector<SewFa
   return edges;
 }
 
-// Steps 1-4 on the faces `members` (one group); their loops are rebuilt from the pieces.
+// Step 6: the edge of each piece (an index < pieces.size()). A class of more than two coinciding pieces is
+// split by solid, a solid being the faces joined by the classes of exactly two pieces: two solids that touch
+// along an edge (coincident faces of parts in an assembly) keep an edge each instead of one non-manifold one.
+std::vector<int> split_by_solid(const std::vector<Piece>& pieces, const std::vector<SewFace>& faces, UnionFind& edges) {
+  const int n = static_cast<int>(pieces.size());
+  std::vector<int> uses(n, 0), edge_of(n);
+  for (int i = 0; i < n; ++i) ++uses[edge_of[i] = edges.find(i)];
+  UnionFind solids(faces.size());
+  std::vector<int> other_face(n, -1);
+  for (int i = 0; i < n; ++i)
+    if (uses[edge_of[i]] == 2) {
+      int& seen = other_face[edge_of[i]];
+      if (seen < 0) seen = pieces[i].face;
+      else solids.unite(seen, pieces[i].face);
+    }
+  // Classes (root, solid) of the crowded edges get the indices of their first piece: unused as roots.
+  std::map<std::pair<int, int>, int> split;
+  std::map<int, std::vector<int>> crowded;  // root -> its pieces
+  for (int i = 0; i < n; ++i)
+    if (uses[edge_of[i]] > 2) {
+      crowded[edge_of[i]].push_back(i);
+      edge_of[i] = split.emplace(std::pair{edge_of[i], solids.find(pieces[i].face)}, i).first->second;
+    }
+  // A piece left alone by the split (a face joined to its solid by crowded edges only, as in two copies
+  // of one solid at one place) is paired with another such piece running the other way, in order.
+  for (const auto& [root, members] : crowded) {
+    std::map<int, int> count;
+    for (int i : members) ++count[edge_of[i]];
+    std::vector<int> forward, backward;
+    for (int i : members)
+      if (count[edge_of[i]] == 1)
+        (runs_against(pieces[members.front()], pieces[i], *faces[pieces[i].face].surface) ? backward : forward).push_back(i);
+    for (size_t k = 0; k < std::min(forward.size(), backward.size()); ++k) edge_of[backward[k]] = edge_of[forward[k]];
+  }
+  return edge_of;
+}
+
+// Steps 1-6 on the faces `members` (one group); their loops are rebuilt from the pieces.
 void sew_group(std::vector<SewFace>& faces, const std::vector<int>& members, const SewingTolerance& tolerance,
                SewingReport& report) {
   std::vector<Piece> pieces = cut_into_pieces(faces, members);
@@ -407,18 +444,21 @@ void sew_group(std::vector<SewFace>& faces, const std::vector<int>& members, con
     }
   }
 
-  std::vector<int> uses(pieces.size(), 0), edge_id(pieces.size(), -1);
-  for (size_t i = 0; i < pieces.size(); ++i) ++uses[edges.find(static_cast<int>(i))];
+  const std::vector<int> edge_of = split_by_solid(pieces, faces, edges);
+  std::vector<int> uses(pieces.size(), 0), first_use(pieces.size(), -1), edge_id(pieces.size(), -1);
+  for (size_t i = 0; i < pieces.size(); ++i)
+    if (uses[edge_of[i]]++ == 0) first_use[edge_of[i]] = static_cast<int>(i);
   for (size_t i = 0; i < pieces.size(); ++i) {
     Piece& p = pieces[i];
-    const int root = edges.find(static_cast<int>(i));
+    const int e = edge_of[i];
     if (p.is_point) {
       ++report.point_pieces;
-    } else if (uses[root] < 2) {
+    } else if (uses[e] < 2) {
       ++report.open_pieces;
     } else {
-      if (edge_id[root] < 0) edge_id[root] = static_cast<int>(report.shared_edges++);
-      p.edge = {edge_id[root], root != static_cast<int>(i) && runs_against(pieces[root], p, *faces[p.face].surface)};
+      if (edge_id[e] < 0) edge_id[e] = static_cast<int>(report.shared_edges++);
+      const int first = first_use[e];
+      p.edge = {edge_id[e], first != static_cast<int>(i) && runs_against(pieces[first], p, *faces[p.face].surface)};
       ++report.sewn_pieces;
     }
   }

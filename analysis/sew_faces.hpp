@@ -30,6 +30,9 @@
 //     along each other further apart than `largest`, share no such pair and are not sewn.
 //  5. The pieces still open repeat steps 2 and 4 among themselves at 10, 100, ... times `first`, up to
 //     `largest` (no cuts): a STEP file written with a tolerance of 0.01 mm has gaps that wide.
+//  6. An edge found on more than two pieces is split by solid (faces joined by the edges of exactly two
+//     pieces): parts of an assembly whose faces coincide keep an edge each, as their B-reps do. Pieces
+//     the split leaves alone (copies of one solid at one place) are paired one way with the other.
 // The cuts are exact (the shape of every loop is unchanged); nothing moves.
 #include "core/scene.hpp"
 

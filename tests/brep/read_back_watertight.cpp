@@ -69,9 +69,11 @@ void check_read_back_watertight(const Scene& source, const std::string& name) {
                 "%ld non-manifold, %d unshared uses\n",
                 form.what, sewing.shared_edges, sewing.cuts, sewing.widest_gap, sewing.open_pieces, sewing.point_pieces,
                 back.boundary, back.non_manifold, report.unshared_edge_uses);
-    EXPECT_LE(back.boundary + back.non_manifold, step.boundary + step.non_manifold) << name << " " << form.what;
     EXPECT_EQ(report.unshared_edge_uses, 0) << name << " " << form.what;
-    if (!form.compact && step.boundary + step.non_manifold == 0) {
+    if (step.boundary + step.non_manifold > 0) continue;  // open in the B-rep: the counts are printed only
+    EXPECT_EQ(back.boundary, 0) << name << " " << form.what;
+    EXPECT_EQ(back.non_manifold, 0) << name << " " << form.what;
+    if (!form.compact && sewing.cuts == 0 && sewing.point_pieces == 0) {
       EXPECT_EQ(sewing.shared_edges, step_shared) << name << " " << form.what;
     }
   }

@@ -3,11 +3,12 @@
 // (read from STEP/IGES, with the B-rep's shared edges) is meshed at D = 0.01 x its bounding-box diagonal
 // and welded by exact position; then written as X3D classic (compact and as the exact NURBS), VRML97 and
 // X3D XML (compact), each read back, sewn (sew_faces at sewing_tolerance) and meshed the same way:
-//  - no read-back mesh has more open edges (boundary + non-manifold) than the B-rep's;
 //  - every use of a sewn edge finds the edge on its face (no unshared edge uses);
-//  - where the B-rep's mesh is closed, sewing the exact NURBS read back finds exactly the B-rep's shared
-//    edges (count of edges used twice or more, per placement). (Where it is not, sewing may close gaps
-//    the B-rep leaves, or see edges shorter than its tolerance as points: the counts are printed.)
+//  - where the B-rep's mesh is closed (no boundary, no non-manifold edge), every read-back mesh is too;
+//  - and the exact NURBS read back, where sewing needed no cut and found no edge shorter than its
+//    tolerance, gives exactly the B-rep's shared edges (count of edges used twice or more, per
+//    placement). Otherwise (open B-reps, whose open edges depend on the sampling; cut or tiny edges)
+//    the counts are printed.
 // Reports failures through GoogleTest and prints one line of figures per form.
 #include <string>
 
