@@ -11,13 +11,13 @@
 #include <unordered_set>
 
 #include "analysis/domain_triangulation.hpp"
-#include "analysis/point_in_loops.hpp"
 #include "analysis/point_inversion.hpp"
 #include "analysis/point_triangle_distance.hpp"
 #include "analysis/sample_trim_segment.hpp"
 #include "analysis/surface_deviation_bound.hpp"
 #include "analysis/surface_evaluator.hpp"
 #include "core/geometry_error.hpp"
+#include "core/point_in_loops.hpp"
 
 namespace cadnurbs {
 
