@@ -12,14 +12,14 @@
 #include <memory>
 #include <thread>
 
-#include "analysis/point_in_loops.hpp"
 #include "analysis/point_inversion.hpp"
-#include "analysis/sample_trim_segment.hpp"
 #include "analysis/sample_triangles.hpp"
 #include "analysis/surface_evaluator.hpp"
 #include "analysis/triangulate_polygon.hpp"
 #include "core/geometry_error.hpp"
 #include "core/knot_vector.hpp"
+#include "core/point_in_loops.hpp"
+#include "core/trim_segment_parameters.hpp"
 
 namespace cadnurbs {
 
@@ -57,9 +57,7 @@ std::vector<double> grid(const SurfaceEvaluator& e, bool along_u, double spacing
   const NurbsSurface& s = e.surface();
   const auto& knots = along_u ? s.u_knots : s.v_knots;
   const int order = along_u ? s.u_order : s.v_order, count = along_u ? s.u_count : s.v_count;
-  std::vector<double> b;
-  for (const auto& km : knot_multiplicities(knots))
-    if (km.value >= knots[order - 1] && km.value <= knots[count]) b.push_back(km.value);
+  const std::vector<double> b = domain_breaks(knots, order, count);
   const double o0 = along_u ? s.v_start() : s.u_start(), o1 = along_u ? s.v_end() : s.u_end();
   std::vector<double> out{b.front()};
   for (size_t i = 0; i + 1 < b.size(); ++i) {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/sample_trim_segment.hpp"
+#include "core/trim_segment_parameters.hpp"
 
 namespace cadnurbs {
 

@@ -4,66 +4,12 @@
 #include <cmath>
 
 #include "analysis/point_triangle_distance.hpp"
-#include "core/knot_vector.hpp"
 
 namespace cadnurbs {
-
-double segment_t0(const TrimSegment& segment) {
-  if (const auto* c = std::get_if<NurbsCurve>(&segment)) return c->domain_start();
-  return 0.0;
-}
-
-double segment_t1(const TrimSegment& segment) {
-  if (const auto* c = std::get_if<NurbsCurve>(&segment)) return c->domain_end();
-  return static_cast<double>(std::get<Polyline2D>(segment).points.size() - 1);
-}
-
-Eigen::Vector2d segment_uv(const TrimSegment& segment, double t) {
-  if (const auto* c = std::get_if<NurbsCurve>(&segment)) return curve_point(*c, t).head<2>();
-  const auto& pts = std::get<Polyline2D>(segment).points;
-  const double tt = std::clamp(t, 0.0, static_cast<double>(pts.size() - 1));
-  const size_t i = std::min(static_cast<size_t>(tt), pts.size() - 2);
-  const double f = tt - static_cast<double>(i);
-  if (f == 0.0) return pts[i];
-  if (f == 1.0) return pts[i + 1];
-  return (1 - f) * pts[i] + f * pts[i + 1];
-}
-
-Eigen::Vector2d segment_tangent(const TrimSegment& segment, double t) {
-  if (const auto* c = std::get_if<NurbsCurve>(&segment)) return curve_derivatives(*c, t, 1)[1].head<2>();
-  const auto& pts = std::get<Polyline2D>(segment).points;
-  const double tt = std::clamp(t, 0.0, static_cast<double>(pts.size() - 1));
-  const size_t i = std::min(static_cast<size_t>(tt), pts.size() - 2);
-  return pts[i + 1] - pts[i];
-}
-
-std::vector<double> segment_breaks(const TrimSegment& segment) {
-  std::vector<double> out;
-  if (const auto* c = std::get_if<NurbsCurve>(&segment)) {
-    const double a = c->domain_start(), b = c->domain_end();
-    for (const auto& km : knot_multiplicities(c->knots))
-      if (km.value >= a && km.value <= b) out.push_back(km.value);
-    return out;
-  }
-  const size_t n = std::get<Polyline2D>(segment).points.size();
-  for (size_t i = 0; i < n; ++i) out.push_back(static_cast<double>(i));
-  return out;
-}
 
 int lines_between(const std::vector<double>& lines, double a, double b) {
   const double lo = std::min(a, b), hi = std::max(a, b);
   return static_cast<int>(std::lower_bound(lines.begin(), lines.end(), hi) - std::upper_bound(lines.begin(), lines.end(), lo));
-}
-
-std::vector<double> segment_kinks(const TrimSegment& segment) {
-  const auto* c = std::get_if<NurbsCurve>(&segment);
-  if (!c) return segment_breaks(segment);
-  const double a = c->domain_start(), b = c->domain_end();
-  std::vector<double> out{a};
-  for (const auto& km : knot_multiplicities(c->knots))
-    if (km.value > a && km.value < b && km.multiplicity >= c->order - 1) out.push_back(km.value);
-  out.push_back(b);
-  return out;
 }
 
 bool is_degenerate_segment(const SurfaceEvaluator& surface, const TrimSegment& segment, double tolerance) {

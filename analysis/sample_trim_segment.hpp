@@ -16,21 +16,10 @@
 
 #include "analysis/surface_deviation_bound.hpp"
 #include "analysis/surface_evaluator.hpp"
+#include "core/trim_segment_parameters.hpp"  // segment_t0, segment_uv, ...: the parametrisation sampled here
 #include "core/trimmed_surface.hpp"
 
 namespace cadnurbs {
-
-// Parameter range of a segment: the curve's domain, or [0, points - 1] for a polyline.
-double segment_t0(const TrimSegment& segment);
-double segment_t1(const TrimSegment& segment);
-// (u,v) at parameter t (clamped), and its derivative d(u,v)/dt.
-Eigen::Vector2d segment_uv(const TrimSegment& segment, double t);
-Eigen::Vector2d segment_tangent(const TrimSegment& segment, double t);
-// Parameters where the segment may bend: distinct knots in the domain, or the polyline's vertices.
-std::vector<double> segment_breaks(const TrimSegment& segment);
-// Parameters where it may have a corner: its ends and C0 knots (multiplicity >= degree), or the
-// polyline's vertices.
-std::vector<double> segment_kinks(const TrimSegment& segment);
 
 struct TrimSample {
   double t;

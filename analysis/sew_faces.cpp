@@ -129,13 +129,6 @@ void collect_faces(SceneNode& node, int group, int& groups, std::vector<SewFace>
 
 // ---- step 1: pieces and their 3D images ----
 
-// Distinct knot values of one direction of the surface: its Bezier patches' borders.
-std::vector<double> distinct_knots(const std::vector<double>& knots) {
-  std::vector<double> out;
-  for (const auto& k : knot_multiplicities(knots)) out.push_back(k.value);
-  return out;
-}
-
 // kSamplesPerSpan per knot span of the piece, and as many again per knot line of the surface that a
 // sample interval crosses (a straight (u,v) side across a many-patch surface is one span long).
 void sample(Piece& piece, const SurfaceEvaluator& surface, double tolerance) {

@@ -10,22 +10,6 @@ namespace cadnurbs {
 
 namespace {
 
-std::vector<double> breaks(const std::vector<double>& knots, int order, int count) {
-  std::vector<double> out;
-  const double a = knots[order - 1], b = knots[count];
-  for (const auto& km : knot_multiplicities(knots))
-    if (km.value >= a && km.value <= b) out.push_back(km.value);
-  return out;
-}
-
-std::vector<double> c0_values(const std::vector<double>& knots, int order, int count) {
-  std::vector<double> out;
-  const double a = knots[order - 1], b = knots[count];
-  for (const auto& km : knot_multiplicities(knots))
-    if (km.value > a && km.value < b && km.multiplicity >= order - 1) out.push_back(km.value);
-  return out;
-}
-
 SecondDerivativeBound patch_bound(const NurbsSurface& patch) {
   const int p = patch.u_order - 1, q = patch.v_order - 1;
   const double du = patch.u_end() - patch.u_start(), dv = patch.v_end() - patch.v_start();
@@ -103,10 +87,10 @@ SecondDerivativeBound SurfaceDeviationBound::over(double u0, double u1, double v
 
 SurfaceDeviationBound surface_deviation_bound(const NurbsSurface& surface) {
   SurfaceDeviationBound out;
-  out.u_breaks = breaks(surface.u_knots, surface.u_order, surface.u_count);
-  out.v_breaks = breaks(surface.v_knots, surface.v_order, surface.v_count);
-  out.c0_u = c0_values(surface.u_knots, surface.u_order, surface.u_count);
-  out.c0_v = c0_values(surface.v_knots, surface.v_order, surface.v_count);
+  out.u_breaks = domain_breaks(surface.u_knots, surface.u_order, surface.u_count);
+  out.v_breaks = domain_breaks(surface.v_knots, surface.v_order, surface.v_count);
+  out.c0_u = c0_knots(surface.u_knots, surface.u_order, surface.u_count);
+  out.c0_v = c0_knots(surface.v_knots, surface.v_order, surface.v_count);
   for (const auto& patch : bezier_patches(surface)) out.patches.push_back(patch_bound(patch));
   return out;
 }

@@ -328,15 +328,13 @@ CurveModel curve_model(const NurbsCurve& given) {
   const int p = curve.degree();
   const auto segments = bezier_segments(curve);
   for (const auto& seg : segments) model.m2 = std::max(model.m2, segment_bounds(seg).m.uu);
+  // Only where the curve is C0 (multiplicity >= degree): elsewhere the pieces join with C1.
+  const std::vector<double> corners = c0_knots(curve.knots, curve.order, curve.count());
   for (size_t s = 0; s + 1 < segments.size(); ++s) {
     const NurbsCurve& left = segments[s];
     const NurbsCurve& right = segments[s + 1];
     const double k = left.domain_end();
-    // only where the curve is C0 (multiplicity >= degree): elsewhere the pieces join with C1
-    int multiplicity = 0;
-    for (const auto& km : knot_multiplicities(curve.knots))
-      if (km.value == k) multiplicity = km.multiplicity;
-    if (multiplicity < p) continue;
+    if (!std::binary_search(corners.begin(), corners.end(), k)) continue;
     const Eigen::Vector4d dl = p / (left.domain_end() - left.domain_start()) *
                                (homogeneous(left.points[p], left.weight(p)) - homogeneous(left.points[p - 1], left.weight(p - 1)));
     const Eigen::Vector4d dr = p / (right.domain_end() - right.domain_start()) *

@@ -2,12 +2,12 @@
 
 #include <cmath>
 
-#include "analysis/point_in_loops.hpp"
-#include "analysis/sample_trim_segment.hpp"
 #include "analysis/surface_evaluator.hpp"
 #include "analysis/triangulate_polygon.hpp"
 #include "core/geometry_error.hpp"
 #include "core/knot_vector.hpp"
+#include "core/point_in_loops.hpp"
+#include "core/trim_segment_parameters.hpp"
 
 namespace cadnurbs {
 
@@ -59,9 +59,7 @@ double strip_integral(const SurfaceEvaluator& e, const TrimSegment& seg, double 
 }
 
 std::vector<double> knot_grid(const std::vector<double>& knots, int order, int count, int per_span) {
-  std::vector<double> b;
-  for (const auto& km : knot_multiplicities(knots))
-    if (km.value >= knots[order - 1] && km.value <= knots[count]) b.push_back(km.value);
+  const std::vector<double> b = domain_breaks(knots, order, count);
   std::vector<double> out{b.front()};
   for (size_t i = 0; i + 1 < b.size(); ++i)
     for (int m = 1; m <= per_span; ++m) out.push_back(m == per_span ? b[i + 1] : b[i] + (b[i + 1] - b[i]) * m / per_span);

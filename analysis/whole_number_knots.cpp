@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/knot_vector.hpp"
 #include "core/number_format.hpp"
 
 namespace cadnurbs {
@@ -24,9 +25,7 @@ bool all_whole_from_zero(const std::vector<double>& knots) {
 
 std::optional<KnotMap> whole_number_knot_map(const std::vector<double>& knots, int max_whole) {
   if (knots.size() < 2 || all_whole_from_zero(knots)) return std::nullopt;
-  std::vector<double> distinct;
-  for (double k : knots)
-    if (distinct.empty() || k > distinct.back()) distinct.push_back(k);
+  const std::vector<double> distinct = distinct_knots(knots);
   if (distinct.size() < 2) return std::nullopt;
   const double first = distinct.front(), length = distinct.back() - first;
   double shortest = length;

@@ -177,4 +177,26 @@ std::vector<KnotMultiplicity> knot_multiplicities(const std::vector<double>& kno
   return out;
 }
 
+std::vector<double> distinct_knots(const std::vector<double>& knots) {
+  std::vector<double> out;
+  for (const auto& km : knot_multiplicities(knots)) out.push_back(km.value);
+  return out;
+}
+
+std::vector<double> domain_breaks(const std::vector<double>& knots, int order, int count) {
+  const double a = knots[order - 1], b = knots[count];
+  std::vector<double> out;
+  for (const auto& km : knot_multiplicities(knots))
+    if (km.value >= a && km.value <= b) out.push_back(km.value);
+  return out;
+}
+
+std::vector<double> c0_knots(const std::vector<double>& knots, int order, int count) {
+  const double a = knots[order - 1], b = knots[count];
+  std::vector<double> out;
+  for (const auto& km : knot_multiplicities(knots))
+    if (km.value > a && km.value < b && km.multiplicity >= order - 1) out.push_back(km.value);
+  return out;
+}
+
 }  // namespace cadnurbs

@@ -35,4 +35,16 @@ struct KnotMultiplicity {
 };
 std::vector<KnotMultiplicity> knot_multiplicities(const std::vector<double>& knots);
 
+// The distinct values of a non-decreasing knot vector, in order.
+std::vector<double> distinct_knots(const std::vector<double>& knots);
+
+// The distinct knot values in the domain [knots[order-1], knots[count]], both ends included: the
+// boundaries of the Bezier pieces (a curve or surface is polynomial, or rational, between two of them).
+std::vector<double> domain_breaks(const std::vector<double>& knots, int order, int count);
+
+// The interior knot values of the domain (ends excluded) repeated at least degree (order - 1) times:
+// the only places where the curve or surface may be merely C0 (a corner), so the only lines a bound on
+// second derivatives must not be applied across.
+std::vector<double> c0_knots(const std::vector<double>& knots, int order, int count);
+
 }  // namespace cadnurbs

@@ -1,6 +1,6 @@
 #include "samples/capping_edges.hpp"
 
-#include "analysis/sample_trim_segment.hpp"
+#include "core/trim_segment_parameters.hpp"
 
 namespace cadnurbs {
 

@@ -37,9 +37,9 @@
 #include <map>
 
 #include "analysis/measure_deviation.hpp"
-#include "analysis/sample_trim_segment.hpp"
 #include "analysis/surface_evaluator.hpp"
 #include "analysis/tessellate_to_deviation.hpp"
+#include "core/trim_segment_parameters.hpp"
 #include "formats/brep/xcaf_to_scene.hpp"
 #include "occt_reference.hpp"
 #include "trimmed_measure.hpp"

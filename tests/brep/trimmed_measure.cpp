@@ -7,6 +7,7 @@
 #include "analysis/triangulate_polygon.hpp"
 #include "core/nurbs_curve.hpp"
 #include "core/nurbs_surface.hpp"
+#include "core/point_in_loops.hpp"
 
 namespace cadnurbs::test {
 
@@ -104,23 +105,12 @@ std::vector<LoopPolygon> domain_polygons(const TrimmedSurface& t) {
   return out;
 }
 
-bool inside_even_odd(const std::vector<LoopPolygon>& polygons, const Eigen::Vector2d& p) {
-  bool in = false;
-  for (const auto& polygon : polygons) {
-    const auto& pts = polygon.points;
-    for (size_t i = 0, j = pts.size() - 1; i < pts.size(); j = i++) {
-      const auto& a = pts[i];
-      const auto& b = pts[j];
-      if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-        in = !in;
-    }
-  }
-  return in;
-}
-
 // +1 when the kept region lies left of the loop's polygon, -1 when right, 0 when undecided; probed just
 // off several of its edges.
 int region_side(const std::vector<LoopPolygon>& polygons, size_t loop, double step) {
+  std::vector<std::vector<Eigen::Vector2d>> points;
+  for (const auto& polygon : polygons) points.push_back(polygon.points);
+  const PointInLoops region(points);
   const auto& pts = polygons[loop].points;
   int left = 0, right = 0;
   const size_t n = pts.size();
@@ -130,7 +120,7 @@ int region_side(const std::vector<LoopPolygon>& polygons, size_t loop, double st
     const Eigen::Vector2d d = b - a;
     if (d.norm() < 10 * step) continue;
     const Eigen::Vector2d mid = 0.5 * (a + b), normal = Eigen::Vector2d(-d.y(), d.x()).normalized();
-    const bool l = inside_even_odd(polygons, mid + step * normal), r = inside_even_odd(polygons, mid - step * normal);
+    const bool l = region.inside(mid + step * normal), r = region.inside(mid - step * normal);
     if (l && !r) ++left;
     if (r && !l) ++right;
   }

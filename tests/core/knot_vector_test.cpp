@@ -42,3 +42,15 @@ TEST(KnotVector, SpanAtDomainEndIsLastNonEmpty) {
   EXPECT_EQ(find_knot_span(knots, 3, 4, 2.0), 3);
   EXPECT_EQ(find_knot_span(knots, 3, 4, 0.0), 2);
 }
+
+TEST(KnotVector, DistinctKnotsDomainBreaksAndC0Knots) {
+  // Cubic (order 4), 8 control points, unclamped at the start: the domain is [knot 3, knot 8] = [1, 5].
+  const std::vector<double> knots = {0, 0.5, 1, 1, 2, 3, 3, 3, 5, 6, 6, 6};
+  EXPECT_EQ(distinct_knots(knots), (std::vector<double>{0, 0.5, 1, 2, 3, 5, 6}));
+  EXPECT_EQ(domain_breaks(knots, 4, 8), (std::vector<double>{1, 2, 3, 5}));
+  // Only 3 (multiplicity 3 = degree) is a corner; 1 is a domain end, 2 is simple.
+  EXPECT_EQ(c0_knots(knots, 4, 8), (std::vector<double>{3}));
+  // A clamped quadratic circle: every double knot inside is C0.
+  EXPECT_EQ(c0_knots({0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4}, 3, 9), (std::vector<double>{1, 2, 3}));
+  EXPECT_TRUE(c0_knots({0, 0, 1, 1}, 2, 2).empty());
+}

@@ -1,4 +1,4 @@
-#include "analysis/point_in_loops.hpp"
+#include "core/point_in_loops.hpp"
 
 #include <algorithm>
 #include <cmath>

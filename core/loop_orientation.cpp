@@ -1,8 +1,9 @@
-#include "formats/brep/loop_orientation.hpp"
+#include "core/loop_orientation.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
 
+#include "core/point_in_loops.hpp"
 #include "core/polygon_2d.hpp"
 
 namespace cadnurbs {
@@ -23,18 +24,6 @@ SampledLoop sample(const TrimLoop& loop) {
   return s;
 }
 
-// Even-odd crossing test.
-bool inside(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p) {
-  bool in = false;
-  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const auto& a = polygon[i];
-    const auto& b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-      in = !in;
-  }
-  return in;
-}
-
 // Points spread along the loop, at midpoints of polygon edges (vertices are where loops touch).
 std::vector<Eigen::Vector2d> probes(const std::vector<Eigen::Vector2d>& polygon) {
   constexpr size_t count = 9;
@@ -52,6 +41,9 @@ void orient_loops(std::vector<TrimLoop>& loops) {
   std::vector<SampledLoop> sampled;
   sampled.reserve(loops.size());
   for (const auto& loop : loops) sampled.push_back(sample(loop));
+  std::vector<PointInLoops> regions;  // each loop alone: containment in one loop, not in the face
+  regions.reserve(loops.size());
+  for (const auto& s : sampled) regions.emplace_back(std::vector<std::vector<Eigen::Vector2d>>{s.polygon});
   for (size_t i = 0; i < loops.size(); ++i) {
     if (sampled[i].polygon.size() < 3) continue;
     const auto points = probes(sampled[i].polygon);
@@ -59,7 +51,7 @@ void orient_loops(std::vector<TrimLoop>& loops) {
     for (size_t j = 0; j < loops.size(); ++j) {
       if (j == i || sampled[j].polygon.size() < 3 || !sampled[j].box.intersects(sampled[i].box)) continue;
       size_t votes = 0;
-      for (const auto& p : points) votes += inside(sampled[j].polygon, p) ? 1 : 0;
+      for (const auto& p : points) votes += regions[j].inside(p) ? 1 : 0;
       if (2 * votes > points.size()) ++depth;
     }
     const bool want_ccw = depth % 2 == 0;
