@@ -15,11 +15,11 @@
 #include <optional>
 
 #include "core/geometry_error.hpp"
+#include "core/loop_closure.hpp"
+#include "core/loop_orientation.hpp"
 #include "core/number_format.hpp"
 #include "formats/brep/direct_face.hpp"
 #include "formats/brep/face_pcurves.hpp"
-#include "formats/brep/loop_closure.hpp"
-#include "formats/brep/loop_orientation.hpp"
 #include "formats/brep/occt_errors.hpp"
 #include "formats/brep/occt_to_nurbs.hpp"
 #include "formats/brep/pcurve_alignment.hpp"
