@@ -9,7 +9,9 @@
 
 #include "analysis/surface_deviation_bound.hpp"
 #include "analysis/surface_evaluator.hpp"
+#include "analysis/tessellate_to_deviation.hpp"
 #include "analysis/tessellation/grid_planning.hpp"
+#include "analysis/trimmed_surface_area.hpp"
 #include "analysis_shapes.hpp"
 
 namespace cadnurbs {
@@ -89,6 +91,47 @@ TEST(GridPlanning, GradedLinesSpreadTheWantedCellsEvenly) {
   // ... unless its knot is C0 (a hard line): then it is kept, and each side gets its own cells.
   const auto hard = graded_grid_lines({0, 1, 1.0001, 2}, {1, 0.001, 1}, {1.0, 1.0001});
   EXPECT_EQ(hard, (std::vector<double>{0, 1, 1.0001, 2}));
+}
+
+}  // namespace
+}  // namespace cadnurbs
+
+namespace cadnurbs {
+namespace {
+
+// A ruled surface between a parabola (z = 0) and a straight line (z = 1) crossing it: straight along v,
+// curved along u, and twisted (not developable).
+TrimmedSurface twisted_ruled_surface() {
+  TrimmedSurface t;
+  NurbsSurface& s = t.surface;
+  s.u_order = 3, s.v_order = 2, s.u_count = 3, s.v_count = 2;
+  s.u_knots = {0, 0, 0, 1, 1, 1};
+  s.v_knots = {0, 0, 1, 1};
+  s.points = {{0, 0, 0}, {1, 1, 0}, {2, 0, 0}, {0, -1, 1}, {1, 0, 1}, {2, 1, 1}};
+  return t;
+}
+
+TEST(GridPlanning, TwistedStraightDirectionGetsStepsThatKeepTheArea) {
+  // FMM alone plans one step along the straight rulings and many thin cells across: every triangle within
+  // D, but tilted against the twisted surface, so the mesh had 4.2-4.3 % more area than the surface
+  // (83 x 1 and 812 x 1 cells here). The normal's turn per cell now bounds the steps along the rulings.
+  const TrimmedSurface ruled = twisted_ruled_surface();
+  const double area = trimmed_surface_area(ruled, 1e-10);
+  for (double d : {0.003, 0.001}) {  // (at D = 0.01, 0.4 % of its size, the saddle's own +0.13 %)
+    const TessellationGrid grid = plan(ruled, d);
+    EXPECT_GT(grid.vs.size(), 2u) << "D " << d;
+    const double meshed = mesh_area(tessellate_to_deviation(ruled, d));
+    std::printf("twisted ruled D %g: %zu x %zu grid lines, mesh area / area - 1 = %+.5f %%\n", d, grid.us.size(),
+                grid.vs.size(), 100 * (meshed / area - 1));
+    EXPECT_LT(meshed, area * (1 + 1e-3)) << "D " << d;
+    EXPECT_GT(meshed, area * (1 - 1e-3)) << "D " << d;
+  }
+}
+
+TEST(GridPlanning, DevelopableStraightDirectionKeepsOneStep) {
+  // A cylinder's rulings do not turn its normal: still one step along them.
+  const TessellationGrid grid = plan(test::quarter_cylinder(10, 50), 0.01);
+  EXPECT_EQ(grid.vs.size(), 2u);
 }
 
 }  // namespace
