@@ -4,37 +4,23 @@
 //   face_areas [--fraction F] [--list] PART...      D = F x the part's bounding-box diagonal (1e-3)
 //
 // Per part: faces, how many differ by more than 0.1 % (0.5 % under 1 mm^2) above and below, the worst
-// differences, and how many of those lie beyond the boundary band |A_mesh - A| <= D x L (L: the face
-// mesh's boundary length; every boundary chord lies within D of its trimming curve, so the strips
-// between chords and curves hold at most that area). A face beyond the band differs inside, which is
-// either the chordal deficit of a curved face (about D / 3r of a cylinder of radius r) or a mesh that
-// covers part of the face twice.
+// differences, and how many of those lie beyond the allowance of analysis/face_area_check (the boundary
+// band D x L).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
-#include <map>
 #include <string>
 #include <vector>
 
 #include "analysis/tessellate_to_deviation.hpp"
-#include "analysis/trimmed_surface_area.hpp"
+#include "analysis/face_area_check.hpp"
 #include "converters/file_formats.hpp"
 #include "core/bounding_box.hpp"
 
 using namespace cadnurbs;
 
 namespace {
-
-double boundary_length(const TriangleMesh& mesh) {
-  std::map<std::pair<int, int>, int> uses;
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])];
-  double length = 0;
-  for (const auto& [edge, n] : uses)
-    if (n == 1) length += (mesh.positions[edge.first] - mesh.positions[edge.second]).norm();
-  return length;
-}
 
 void check(const std::string& path, double fraction, bool list) {
   const Scene exact = read_scene(path);
@@ -52,19 +38,18 @@ void check(const std::string& path, double fraction, bool list) {
     const auto* face = std::get_if<TrimmedSurface>(&source->geometry);
     const auto* triangles = std::get_if<TriangleMesh>(&mesh->geometry);
     if (!face || !triangles) continue;
-    const double area = trimmed_surface_area(*face, 1e-7);
-    const double difference = mesh_area(*triangles) - area;
-    const double relative = difference / area, limit = area < 1 ? 0.005 : 0.001;
+    const FaceAreaCheck check = check_face_area(*face, *triangles, d);
+    const double relative = check.mesh_area / check.area - 1, limit = check.area < 1 ? 0.005 : 0.001;
     ++counted;
     worst_over = std::max(worst_over, relative);
     worst_under = std::min(worst_under, relative);
     if (std::abs(relative) <= limit) continue;
     (relative > 0 ? over : under) += 1;
-    const double band = d * boundary_length(*triangles);
-    if (std::abs(difference) > band) ++beyond_band;
+    if (check.beyond()) ++beyond_band;
     if (list)
-      std::printf("  %s %s: %+.3f %% of %.4g, band %.3g (%s)\n", display_name(*source).c_str(), source->source_type.c_str(),
-                  100 * relative, area, band, std::abs(difference) > band ? "beyond" : "within");
+      std::printf("  %s %s: %+.3f %% of %.4g, allowance %.3g (%s)\n", display_name(*source).c_str(),
+                  source->source_type.c_str(), 100 * relative, check.area, check.allowance,
+                  check.beyond() ? "beyond" : "within");
   }
   std::printf("%s: D %.4g, %d faces, %d over and %d under the limit (%d beyond the boundary band), worst %+.3f %% %+.3f %%\n",
               path.c_str(), d, counted, over, under, beyond_band, 100 * worst_over, 100 * worst_under);

@@ -1,0 +1,47 @@
+// No face covered twice (issue 9): every face of 20 library parts meshed at D = 0.001 x diagonal has its
+// mesh area within check_face_area's allowance of its trimmed NURBS area.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <functional>
+
+#include "analysis/face_area_check.hpp"
+#include "analysis/tessellate_to_deviation.hpp"
+#include "core/bounding_box.hpp"
+#include "corpus_manifest.hpp"
+#include "formats/step/step_reader.hpp"
+#include "part_library.hpp"
+
+namespace cadnurbs::test {
+namespace {
+
+class LibraryFaceAreas : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(LibraryFaceAreas, NoFaceBeyondItsAllowance) {
+  const std::string path = library_file(GetParam(), ".step");
+  ASSERT_TRUE(std::filesystem::exists(path)) << path << " (scripts/fetch-part-library.sh fetches it)";
+  const Scene exact = read_step(path).scene;
+  const double d = 1e-3 * scene_bounding_box(exact).diagonal().norm();
+  const Scene meshed = tessellate_to_deviation(exact, d);
+  int faces = 0;
+  std::function<void(const SceneNode&, const SceneNode&)> walk = [&](const SceneNode& a, const SceneNode& b) {
+    for (size_t i = 0; i < a.shapes.size(); ++i) {
+      const auto* face = std::get_if<TrimmedSurface>(&a.shapes[i].geometry);
+      const auto* mesh = std::get_if<TriangleMesh>(&b.shapes[i].geometry);
+      if (!face || !mesh) continue;
+      ++faces;
+      const FaceAreaCheck check = check_face_area(*face, *mesh, d);
+      EXPECT_FALSE(check.beyond()) << display_name(a.shapes[i]) << ": mesh " << check.mesh_area << ", face "
+                                   << check.area << ", allowance " << check.allowance;
+    }
+    for (size_t i = 0; i < a.children.size(); ++i) walk(a.children[i], b.children[i]);
+  };
+  walk(exact.root, meshed.root);
+  EXPECT_GT(faces, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Library, LibraryFaceAreas, ::testing::ValuesIn(library_parts()),
+                         [](const auto& info) { return corpus_test_name(info.param); });
+
+}  // namespace
+}  // namespace cadnurbs::test
