@@ -3,12 +3,13 @@
 // mesh within D of the face may differ by anyway.
 //
 // In:  a trimmed surface, its mesh (tessellate_to_deviation at D), and D.
-// Out: both areas and the allowance max(0.1 % of the area (0.5 % under 1 unit^2), D x L), L the mesh's
-//      boundary length. Why D x L: every boundary chord lies within D of its trimming curve, so the strips
-//      between chords and curves hold at most D x L; a curved face's chords lose about D/3r of a cylinder of
-//      radius r, which stays inside that too on the parts measured (bench/README.md, face_areas). A
-//      difference beyond the allowance means the mesh covers part of the face twice, or tilts away from it
-//      (long triangles across a twisted surface), which the deviation certificate cannot see.
+// Out: both areas and the allowance max(0.1 % of the area (0.5 % under 1 unit^2), D x (L + k A)), L the
+//      mesh's boundary length, k the largest principal curvature sampled over the surface, A the area.
+//      Why: every boundary chord lies within D of its trimming curve, so the strips between chords and
+//      curves hold at most D x L; inside, flat triangles within D of a surface curved by k differ from it
+//      by about D k per unit area (a cylinder of radius r loses D/3r). A difference beyond the allowance
+//      means the mesh covers part of the face twice, or tilts away from it (long triangles across a
+//      twisted surface), which the deviation certificate cannot see.
 // The exact area costs 1.5-20 times the meshing (trimmed_surface_area, relative tolerance 1e-7).
 #include "core/triangle_mesh.hpp"
 #include "core/trimmed_surface.hpp"
@@ -18,12 +19,16 @@ namespace cadnurbs {
 struct FaceAreaCheck {
   double area = 0;       // of the trimmed surface
   double mesh_area = 0;
-  double allowance = 0;  // max(relative limit x area, D x boundary length)
+  double allowance = 0;  // max(relative limit x area, D x (boundary length + curvature x area))
   bool beyond() const { return mesh_area - area > allowance || area - mesh_area > allowance; }
 };
 
 // The mesh's boundary length: edges used by one triangle (by index).
 double boundary_length(const TriangleMesh& mesh);
+
+// The largest |principal curvature| over a grid of the surface's domain (trims ignored: an upper value
+// for the trimmed face), poles skipped.
+double largest_curvature(const NurbsSurface& surface);
 
 FaceAreaCheck check_face_area(const TrimmedSurface& face, const TriangleMesh& mesh, double max_deviation);
 

@@ -5,7 +5,7 @@
 //
 // Per part: faces, how many differ by more than 0.1 % (0.5 % under 1 mm^2) above and below, the worst
 // differences, and how many of those lie beyond the allowance of analysis/face_area_check (the boundary
-// band D x L).
+// band and the curvature term).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -51,7 +51,7 @@ void check(const std::string& path, double fraction, bool list) {
                   source->source_type.c_str(), 100 * relative, check.area, check.allowance,
                   check.beyond() ? "beyond" : "within");
   }
-  std::printf("%s: D %.4g, %d faces, %d over and %d under the limit (%d beyond the boundary band), worst %+.3f %% %+.3f %%\n",
+  std::printf("%s: D %.4g, %d faces, %d over and %d under the limit (%d beyond the allowance), worst %+.3f %% %+.3f %%\n",
               path.c_str(), d, counted, over, under, beyond_band, 100 * worst_over, 100 * worst_under);
 }
 
