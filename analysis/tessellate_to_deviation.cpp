@@ -7,6 +7,7 @@
 #include <set>
 #include <vector>
 
+#include "analysis/face_area_check.hpp"
 #include "analysis/tessellation/domain_loop.hpp"
 #include "analysis/tessellation/face_meshing.hpp"
 #include "analysis/tessellation/grid_planning.hpp"
@@ -137,14 +138,22 @@ TriangleMesh tessellate_to_deviation(const TrimmedSurface& surface, double max_d
   return std::move(faces[0].mesh);
 }
 
-Scene tessellate_to_deviation(const Scene& scene, double max_deviation, TessellationReport* report) {
+Scene tessellate_to_deviation(const Scene& scene, double max_deviation, TessellationReport* report,
+                              bool check_face_areas) {
   check_deviation(max_deviation);
   TessellationReport local;
+  TessellationReport& r = report ? *report : local;
   Scene out = scene;
   std::vector<Face> faces;
   std::vector<Shape*> shapes;
   collect_faces(out.root, out.root.name, Eigen::Affine3d::Identity(), faces, shapes);
-  Tessellator(faces, max_deviation, report ? *report : local).run();
+  Tessellator(faces, max_deviation, r).run();
+  if (check_face_areas)
+    for (const Face& f : faces)
+      if (check_face_area(*f.trimmed, f.mesh, max_deviation).beyond()) {
+        ++r.faces_beyond_area_allowance;
+        r.uncertified_triangles += static_cast<long>(f.mesh.triangles.size());
+      }
   for (size_t i = 0; i < faces.size(); ++i) shapes[i]->geometry = std::move(faces[i].mesh);
   return out;
 }

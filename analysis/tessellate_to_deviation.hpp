@@ -39,6 +39,8 @@
 //     point where it peaks, is inserted (Delaunay). This is what guarantees the trimmed triangles, not
 //     only the grid.
 //  5. face_meshing: points go to 3D with per-corner normals from the surface (stepping off poles).
+//  6. (on request) face_area_check: each face's mesh area against its exact area, which the deviation
+//     certificate cannot see (a fold, or long triangles tilted across a twisted surface).
 // Degenerate trim segments (poles: the surface point does not move along them) are one mesh
 // vertex; triangles with two corners there have no area and are dropped (no slivers, no cracks).
 // The trimmed strip between a (u,v) chord of a loop and the curve itself is covered by the 3D
@@ -57,6 +59,9 @@ struct TessellationReport {
                                      // this face, or refinement stopped at 1e-9 of the domain)
   int unshared_edge_uses = 0;        // uses of a shared edge that did not match it within D (sampled
                                      // on their own: the mesh may have a crack there)
+  int faces_beyond_area_allowance = 0;  // with check_face_areas: faces whose mesh area differs from their
+                                        // area by more than face_area_check allows (their triangles are
+                                        // counted as uncertified too)
 };
 
 // Triangles (counter-clockwise seen along Su x Sv) with per-corner normals, in the surface's own
@@ -70,7 +75,10 @@ TriangleMesh tessellate_to_deviation(const TrimmedSurface& surface, double max_d
 // transforms and tree kept; meshes and curves pass through). Segments with the same edge id carry
 // bit-identical vertices on all the faces that use them, so weld_exact of a closed solid's faces
 // leaves no boundary edge. A face that cannot be tessellated throws GeometryError naming its node
-// path and shape.
-Scene tessellate_to_deviation(const Scene& scene, double max_deviation, TessellationReport* report = nullptr);
+// path and shape. check_face_areas: step 6, every face's mesh area against its exact area
+// (analysis/face_area_check; costs about as much again as the meshing), so that a mesh covering part of
+// a face twice, which the deviation certificate cannot see, is reported like uncertified triangles.
+Scene tessellate_to_deviation(const Scene& scene, double max_deviation, TessellationReport* report = nullptr,
+                              bool check_face_areas = false);
 
 }  // namespace cadnurbs

@@ -29,6 +29,8 @@ std::string help() {
          "                      (formats that hold triangles only imply it)\n"
          "  --deviation D       that maximum deviation, in the output unit (default: 0.001 x the\n"
          "                      bounding-box diagonal)\n"
+         "  --check-areas       --mesh: also compare every face's mesh area with its exact area and\n"
+         "                      count the faces that differ by more than a mesh within D may (a fold)\n"
          "  --display-deviation D  NURBS output: uTessellation / vTessellation / trimming-curve counts\n"
          "                      with which viewers that tessellate uniformly (X_ITE, view3dscene) draw\n"
          "                      every face within D (default: as --deviation; 0: none written)\n"
@@ -68,7 +70,7 @@ void print_compaction(const std::string& out, const CompactReport& r) {
 
 int run_convert(const std::vector<std::string>& args) {
   const Arguments a = parse_arguments("convert", args, {"output", "steps", "precision", "deviation", "display-deviation", "units"},
-                                      {"mesh", "euclidean", "self-contained", "exact-nurbs", "pretty", "help"});
+                                      {"mesh", "euclidean", "self-contained", "exact-nurbs", "pretty", "check-areas", "help"});
   if (a.has("help")) {
     std::cout << help();
     return 0;
@@ -135,10 +137,13 @@ int run_convert(const std::vector<std::string>& args) {
                 << " pieces cut at a neighbour's vertex, " << sewing.polygon_faces << " polygons as faces\n";
     }
     TessellationReport report;
-    written = tessellate_to_deviation(sew ? faces : scene, d, &report);
+    const bool check_areas = a.has("check-areas");
+    written = tessellate_to_deviation(sew ? faces : scene, d, &report, check_areas);
     how = ", max deviation " + std::to_string(d) + " " + scene.unit.name + "; certified " +
           std::to_string(report.certified_deviation) + ", " + std::to_string(report.uncertified_triangles) +
-          " uncertified triangles, " + std::to_string(report.unshared_edge_uses) + " unshared edge uses";
+          " uncertified triangles, " + std::to_string(report.unshared_edge_uses) + " unshared edge uses" +
+          (check_areas ? ", " + std::to_string(report.faces_beyond_area_allowance) + " faces beyond their area allowance"
+                       : std::string());
   } else if (format.compact && !a.has("exact-nurbs")) {
     CompactReport report;
     written = compact_scene(scene, written_tolerance(scene, precision), &report);

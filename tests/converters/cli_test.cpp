@@ -228,3 +228,14 @@ TEST_F(Cli, OwnNurbsFileMeshesWatertightBySewing) {
   EXPECT_EQ(edges.boundary, 0);
   EXPECT_EQ(edges.non_manifold, 0);
 }
+
+TEST_F(Cli, CheckAreasReportsFacesBeyondTheirAllowance) {
+  const std::string step = std::string(CADNURBS_SHARED_DIR) + "/corpus/step/screw.step";
+  const CommandResult r = run("convert " + step + " --mesh --check-areas -o " + path("screw.stl"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("0 uncertified triangles, 0 unshared edge uses, 0 faces beyond their area allowance"),
+            std::string::npos)
+      << r.out;
+  const CommandResult plain = run("convert " + step + " --mesh -o " + path("plain.stl"));
+  EXPECT_EQ(plain.out.find("area allowance"), std::string::npos) << plain.out;  // only when asked
+}
