@@ -16,7 +16,10 @@ EdgeCounts count_boundary_edges(const TriangleMesh& mesh) {
     }
   EdgeCounts out;
   for (const auto& [edge, n] : uses) {
-    if (n == 1) ++out.boundary;
+    if (n == 1) {
+      ++out.boundary;
+      out.boundary_length += (mesh.positions[edge >> 32] - mesh.positions[edge & 0xffffffffu]).norm();
+    }
     if (n > 2) ++out.non_manifold;
   }
   return out;

@@ -9,6 +9,7 @@ namespace cadnurbs {
 struct EdgeCounts {
   long boundary = 0;      // edges used by exactly one triangle
   long non_manifold = 0;  // edges used by three or more triangles
+  double boundary_length = 0;  // total length of the boundary edges
 };
 
 EdgeCounts count_boundary_edges(const TriangleMesh& mesh);

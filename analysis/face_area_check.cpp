@@ -1,23 +1,14 @@
 #include "analysis/face_area_check.hpp"
 
 #include <algorithm>
-#include <map>
+#include <cmath>
 
+#include "analysis/count_boundary_edges.hpp"
 #include "analysis/surface_evaluator.hpp"
 #include "analysis/trimmed_surface_area.hpp"
 #include "core/knot_vector.hpp"
 
 namespace cadnurbs {
-
-double boundary_length(const TriangleMesh& mesh) {
-  std::map<std::pair<int, int>, int> uses;
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])];
-  double length = 0;
-  for (const auto& [edge, n] : uses)
-    if (n == 1) length += (mesh.positions[edge.first] - mesh.positions[edge.second]).norm();
-  return length;
-}
 
 double largest_curvature(const NurbsSurface& surface) {
   const SurfaceEvaluator e(surface);
@@ -51,8 +42,30 @@ FaceAreaCheck check_face_area(const TrimmedSurface& face, const TriangleMesh& me
   FaceAreaCheck out;
   out.area = trimmed_surface_area(face, 1e-4);  // a tenth of the smallest allowance
   out.mesh_area = mesh_area(mesh);
-  const double relative = out.area < 1 ? 0.005 : 0.001;
-  out.allowance = std::max(relative * out.area, max_deviation * (boundary_length(mesh) + largest_curvature(face.surface) * out.area));
+  out.relative_limit = out.area < 1 ? 0.005 : 0.001;
+  const double band = count_boundary_edges(mesh).boundary_length;
+  out.allowance = std::max(out.relative_limit * out.area,
+                           max_deviation * (band + largest_curvature(face.surface) * out.area));
+  return out;
+}
+
+namespace {
+
+void check_node(const SceneNode& exact, const SceneNode& meshed, double d, std::vector<SceneFaceAreaCheck>& out) {
+  for (size_t i = 0; i < exact.shapes.size() && i < meshed.shapes.size(); ++i) {
+    const auto* face = std::get_if<TrimmedSurface>(&exact.shapes[i].geometry);
+    const auto* mesh = std::get_if<TriangleMesh>(&meshed.shapes[i].geometry);
+    if (face && mesh) out.push_back({&exact.shapes[i], check_face_area(*face, *mesh, d)});
+  }
+  for (size_t i = 0; i < exact.children.size() && i < meshed.children.size(); ++i)
+    check_node(exact.children[i], meshed.children[i], d, out);
+}
+
+}  // namespace
+
+std::vector<SceneFaceAreaCheck> check_face_areas(const Scene& exact, const Scene& meshed, double max_deviation) {
+  std::vector<SceneFaceAreaCheck> out;
+  check_node(exact.root, meshed.root, max_deviation, out);
   return out;
 }
 

@@ -11,25 +11,33 @@
 //      means the mesh covers part of the face twice, or tilts away from it (long triangles across a
 //      twisted surface), which the deviation certificate cannot see.
 // The exact area costs 1.5-20 times the meshing (trimmed_surface_area, relative tolerance 1e-7).
-#include "core/triangle_mesh.hpp"
-#include "core/trimmed_surface.hpp"
+#include <string>
+#include <vector>
+
+#include "core/scene.hpp"
 
 namespace cadnurbs {
 
 struct FaceAreaCheck {
-  double area = 0;       // of the trimmed surface
+  double area = 0;            // of the trimmed surface
   double mesh_area = 0;
-  double allowance = 0;  // max(relative limit x area, D x (boundary length + curvature x area))
+  double relative_limit = 0;  // 0.001, or 0.005 for faces under 1 unit^2
+  double allowance = 0;       // max(relative_limit x area, D x (boundary length + curvature x area))
   bool beyond() const { return mesh_area - area > allowance || area - mesh_area > allowance; }
 };
-
-// The mesh's boundary length: edges used by one triangle (by index).
-double boundary_length(const TriangleMesh& mesh);
 
 // The largest |principal curvature| over a grid of the surface's domain (trims ignored: an upper value
 // for the trimmed face), poles skipped.
 double largest_curvature(const NurbsSurface& surface);
 
 FaceAreaCheck check_face_area(const TrimmedSurface& face, const TriangleMesh& mesh, double max_deviation);
+
+// The same for every face of `exact` whose mesh is in `meshed`, the same tree (as tessellate_to_deviation
+// returns it), in scene order.
+struct SceneFaceAreaCheck {
+  const Shape* face;  // in `exact`
+  FaceAreaCheck check;
+};
+std::vector<SceneFaceAreaCheck> check_face_areas(const Scene& exact, const Scene& meshed, double max_deviation);
 
 }  // namespace cadnurbs

@@ -6,8 +6,8 @@
 #include <map>
 #include <memory>
 #include <stdexcept>
-#include <unordered_map>
 
+#include "analysis/point_hash_grid.hpp"
 #include "analysis/point_inversion.hpp"
 #include "analysis/sample_trim_segment.hpp"
 #include "analysis/surface_evaluator.hpp"
@@ -106,14 +106,6 @@ void polygons_as_faces(SceneNode& node, double tolerance, SewingReport& report) 
   for (auto& child : node.children) polygons_as_faces(child, tolerance, report);
 }
 
-TrimLoop domain_rectangle(const NurbsSurface& s) {
-  const Eigen::Vector2d a(s.u_start(), s.v_start()), b(s.u_end(), s.v_start()), c(s.u_end(), s.v_end()),
-      d(s.u_start(), s.v_end());
-  TrimLoop loop;
-  for (const auto& [from, to] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) loop.segments.push_back(Polyline2D{{from, to}});
-  return loop;
-}
-
 // Faces in scene order, each with its group: the nearest named node above it (a solid or part, as the
 // source file named it) with all the unnamed nodes below it (writers' Groups and Transforms). Faces are
 // sewn within their group only, so that parts of an assembly that touch stay separate solids.
@@ -121,7 +113,7 @@ void collect_faces(SceneNode& node, int group, int& groups, std::vector<SewFace>
   if (!node.name.empty()) group = groups++;
   for (auto& shape : node.shapes)
     if (auto* t = std::get_if<TrimmedSurface>(&shape.geometry)) {
-      if (t->loops.empty()) t->loops.push_back(domain_rectangle(t->surface));
+      if (t->loops.empty()) t->loops.push_back(domain_loop(t->surface));
       faces.push_back({t, std::make_unique<SurfaceEvaluator>(t->surface), group});
     }
   for (auto& child : node.children) collect_faces(child, group, groups, faces);
@@ -184,36 +176,17 @@ std::vector<Piece> cut_into_pieces(const std::vector<SewFace>& faces, const std:
 
 // ---- step 2: model vertices ----
 
-struct CellKey {
-  long long x, y, z;
-  bool operator==(const CellKey&) const = default;
-};
-struct CellHash {
-  size_t operator()(const CellKey& k) const {
-    return std::hash<long long>()(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
-  }
-};
-
 // Cluster id per point: points closer than `tolerance` share one (transitively); ids 0, 1, ... in
 // order of first appearance.
 std::vector<int> cluster_points(const std::vector<Eigen::Vector3d>& points, double tolerance) {
-  std::unordered_map<CellKey, std::vector<int>, CellHash> cells;
+  PointHashGrid grid(tolerance);
   UnionFind classes(points.size());
-  auto cell_of = [&](const Eigen::Vector3d& p) {
-    return CellKey{static_cast<long long>(std::floor(p.x() / tolerance)), static_cast<long long>(std::floor(p.y() / tolerance)),
-                   static_cast<long long>(std::floor(p.z() / tolerance))};
-  };
   for (size_t i = 0; i < points.size(); ++i) {
-    const CellKey c = cell_of(points[i]);
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz) {
-          const auto it = cells.find({c.x + dx, c.y + dy, c.z + dz});
-          if (it == cells.end()) continue;
-          for (int j : it->second)
-            if ((points[j] - points[i]).norm() <= tolerance) classes.unite(static_cast<int>(i), j);
-        }
-    cells[c].push_back(static_cast<int>(i));
+    grid.find_near(points[i], [&](int j) {
+      if ((points[j] - points[i]).norm() <= tolerance) classes.unite(static_cast<int>(i), j);
+      return false;  // every neighbour, not only the first
+    });
+    grid.insert(points[i], static_cast<int>(i));
   }
   std::vector<int> id(points.size(), -1), id_of_root(points.size(), -1);
   int next = 0;

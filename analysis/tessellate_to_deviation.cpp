@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "analysis/face_area_check.hpp"
-#include "analysis/tessellation/domain_loop.hpp"
 #include "analysis/tessellation/face_meshing.hpp"
 #include "analysis/tessellation/grid_planning.hpp"
 #include "analysis/tessellation/loop_chord_checks.hpp"
@@ -93,7 +92,7 @@ class Tessellator {
     validate(*f.trimmed, f.name);
     f.eval = std::make_unique<SurfaceEvaluator>(f.trimmed->surface);
     f.bound = surface_deviation_bound(f.trimmed->surface);
-    if (f.trimmed->loops.empty()) f.loops.push_back(tessellation::domain_loop(f.trimmed->surface));
+    if (f.trimmed->loops.empty()) f.loops.push_back(domain_loop(f.trimmed->surface));
     else f.loops = f.trimmed->loops;
     shared_.add_face(static_cast<int>(&f - faces_.data()));
     std::vector<std::vector<Eigen::Vector2d>> polys;

@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,33 +25,23 @@ void check(const std::string& path, double fraction, bool list) {
   const Scene exact = read_scene(path);
   const double d = fraction * scene_bounding_box(exact).diagonal().norm();
   const Scene meshed = tessellate_to_deviation(exact, d);
-  std::vector<std::pair<const Shape*, const Shape*>> faces;
-  std::function<void(const SceneNode&, const SceneNode&)> walk = [&](const SceneNode& a, const SceneNode& b) {
-    for (size_t i = 0; i < a.shapes.size(); ++i) faces.emplace_back(&a.shapes[i], &b.shapes[i]);
-    for (size_t i = 0; i < a.children.size(); ++i) walk(a.children[i], b.children[i]);
-  };
-  walk(exact.root, meshed.root);
-  int counted = 0, over = 0, under = 0, beyond_band = 0;
+  int counted = 0, over = 0, under = 0, beyond = 0;
   double worst_over = 0, worst_under = 0;
-  for (const auto& [source, mesh] : faces) {
-    const auto* face = std::get_if<TrimmedSurface>(&source->geometry);
-    const auto* triangles = std::get_if<TriangleMesh>(&mesh->geometry);
-    if (!face || !triangles) continue;
-    const FaceAreaCheck check = check_face_area(*face, *triangles, d);
-    const double relative = check.mesh_area / check.area - 1, limit = check.area < 1 ? 0.005 : 0.001;
+  for (const auto& [face, check] : check_face_areas(exact, meshed, d)) {
+    const double relative = check.mesh_area / check.area - 1;
     ++counted;
     worst_over = std::max(worst_over, relative);
     worst_under = std::min(worst_under, relative);
-    if (std::abs(relative) <= limit) continue;
+    if (std::abs(relative) <= check.relative_limit) continue;
     (relative > 0 ? over : under) += 1;
-    if (check.beyond()) ++beyond_band;
+    if (check.beyond()) ++beyond;
     if (list)
-      std::printf("  %s %s: %+.3f %% of %.4g, allowance %.3g (%s)\n", display_name(*source).c_str(),
-                  source->source_type.c_str(), 100 * relative, check.area, check.allowance,
+      std::printf("  %s %s: %+.3f %% of %.4g, allowance %.3g (%s)\n", display_name(*face).c_str(),
+                  face->source_type.c_str(), 100 * relative, check.area, check.allowance,
                   check.beyond() ? "beyond" : "within");
   }
   std::printf("%s: D %.4g, %d faces, %d over and %d under the limit (%d beyond the allowance), worst %+.3f %% %+.3f %%\n",
-              path.c_str(), d, counted, over, under, beyond_band, 100 * worst_over, 100 * worst_under);
+              path.c_str(), d, counted, over, under, beyond, 100 * worst_over, 100 * worst_under);
 }
 
 }  // namespace

@@ -89,4 +89,13 @@ void validate(const TrimmedSurface& trimmed, const std::string& entity, double c
   }
 }
 
+TrimLoop domain_loop(const NurbsSurface& s) {
+  const Eigen::Vector2d a(s.u_start(), s.v_start()), b(s.u_end(), s.v_start()), c(s.u_end(), s.v_end()),
+      d(s.u_start(), s.v_end());
+  TrimLoop loop;
+  for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}, std::pair{d, a}})
+    loop.segments.emplace_back(Polyline2D{{p, q}});
+  return loop;
+}
+
 }  // namespace cadnurbs

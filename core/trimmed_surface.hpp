@@ -52,6 +52,10 @@ double loop_signed_area(const TrimLoop& loop);
 // The same loop traversed the other way.
 TrimLoop reversed(const TrimLoop& loop);
 
+// The loop of the whole domain, counter-clockwise: sides (v0 side, u1 side, v1 side, u0 side), each a
+// two-point polyline; what an untrimmed surface is trimmed by.
+TrimLoop domain_loop(const NurbsSurface& surface);
+
 // Throws GeometryError unless the surface is valid and every loop has segments, valid 2D curves,
 // and closes within `closure_tolerance` (in parameter units).
 void validate(const TrimmedSurface& trimmed, const std::string& entity, double closure_tolerance = 1e-9);

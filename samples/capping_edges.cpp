@@ -16,12 +16,7 @@ Eigen::Vector3d on_segment(const TrimmedSurface& t, const TrimSegment& s, double
 void share_capping_edges(Scene& scene) {
   auto& shapes = scene.root.shapes;
   TrimmedSurface& body = std::get<TrimmedSurface>(shapes[0].geometry);
-  const NurbsSurface& s = body.surface;
-  const Eigen::Vector2d a(s.u_start(), s.v_start()), b(s.u_end(), s.v_start()), c(s.u_end(), s.v_end()),
-      d(s.u_start(), s.v_end());
-  TrimLoop loop;
-  for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, d}, std::pair{d, a}})
-    loop.segments.emplace_back(Polyline2D{{p, q}});
+  TrimLoop loop = domain_loop(body.surface);
   loop.edges = {{1, false}, {3, false}, {2, false}, {3, true}};
   body.loops = {loop};
   // Each lid's loop runs along its body side one way or the other.

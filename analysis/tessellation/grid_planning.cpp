@@ -79,8 +79,8 @@ PatchSteps patch_steps(const SurfaceEvaluator& e, double u0, double hu, double v
       mvv = std::max(mvv, std::abs(un.dot(jet.svv)));
       any_normal = true;
       const double twist = std::abs(un.dot(jet.suv));
-      const double su_across = jet.su.cross(jet.sv).norm() / std::max(jet.sv.norm(), 1e-300);  // |S_u| across S_v
-      const double sv_across = jet.su.cross(jet.sv).norm() / std::max(jet.su.norm(), 1e-300);
+      const double su_across = n.norm() / std::max(jet.sv.norm(), 1e-300);  // |S_u| across S_v
+      const double sv_across = n.norm() / std::max(jet.su.norm(), 1e-300);
       if (su_across > 0) turn_v = std::max(turn_v, twist / su_across);
       if (sv_across > 0) turn_u = std::max(turn_u, twist / sv_across);
     }

@@ -79,22 +79,16 @@ void count_open_edges(const SceneNode& exact, const SceneNode& meshed, const std
     count_open_edges(exact.children[i], meshed.children[i], degenerated, path + "/" + std::to_string(i), out);
 }
 
-// Faces of `exact` whose mesh in `meshed` (the same tree) differs in area by more than face_area_check
-// allows: a face covered twice, or tilted across a twisted surface (issue 9), printed by name.
-int faces_beyond_area_allowance(const SceneNode& exact, const SceneNode& meshed, double d) {
+// Faces of `exact` whose mesh in `meshed` differs in area by more than face_area_check allows: a face
+// covered twice, or tilted across a twisted surface (issue 9), printed by name.
+int faces_beyond_area_allowance(const Scene& exact, const Scene& meshed, double d) {
   int beyond = 0;
-  for (size_t i = 0; i < exact.shapes.size(); ++i) {
-    const auto* face = std::get_if<TrimmedSurface>(&exact.shapes[i].geometry);
-    const auto* mesh = std::get_if<TriangleMesh>(&meshed.shapes[i].geometry);
-    if (!face || !mesh) continue;
-    const FaceAreaCheck check = check_face_area(*face, *mesh, d);
+  for (const auto& [face, check] : check_face_areas(exact, meshed, d)) {
     if (!check.beyond()) continue;
     ++beyond;
-    std::printf("  face %s: mesh area %g, face %g, allowance %g\n", display_name(exact.shapes[i]).c_str(),
-                check.mesh_area, check.area, check.allowance);
+    std::printf("  face %s: mesh area %g, face %g, allowance %g\n", display_name(*face).c_str(), check.mesh_area,
+                check.area, check.allowance);
   }
-  for (size_t i = 0; i < exact.children.size(); ++i)
-    beyond += faces_beyond_area_allowance(exact.children[i], meshed.children[i], d);
   return beyond;
 }
 
@@ -145,7 +139,7 @@ TEST_P(TessellationCorpus, WithinDeviationCloseToOcctAndWatertight) {
   // means the faces' conversions disagree (Ventilator.stp's half cylinders did, by 1.6 mm).
   EXPECT_EQ(report.unshared_edge_uses, 0);
   // No face covered twice: each face's mesh area within what a mesh within D may differ by.
-  EXPECT_EQ(faces_beyond_area_allowance(translation.scene.root, meshed.root, d), 0);
+  EXPECT_EQ(faces_beyond_area_allowance(translation.scene, meshed, d), 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, TessellationCorpus, ::testing::ValuesIn(corpus_paths({"step/", "iges/"})),

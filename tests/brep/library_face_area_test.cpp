@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <functional>
 
 #include "analysis/face_area_check.hpp"
 #include "analysis/tessellate_to_deviation.hpp"
@@ -23,21 +22,12 @@ TEST_P(LibraryFaceAreas, NoFaceBeyondItsAllowance) {
   const Scene exact = read_step(path).scene;
   const double d = 1e-3 * scene_bounding_box(exact).diagonal().norm();
   const Scene meshed = tessellate_to_deviation(exact, d);
-  int faces = 0;
-  std::function<void(const SceneNode&, const SceneNode&)> walk = [&](const SceneNode& a, const SceneNode& b) {
-    for (size_t i = 0; i < a.shapes.size(); ++i) {
-      const auto* face = std::get_if<TrimmedSurface>(&a.shapes[i].geometry);
-      const auto* mesh = std::get_if<TriangleMesh>(&b.shapes[i].geometry);
-      if (!face || !mesh) continue;
-      ++faces;
-      const FaceAreaCheck check = check_face_area(*face, *mesh, d);
-      EXPECT_FALSE(check.beyond()) << display_name(a.shapes[i]) << ": mesh " << check.mesh_area << ", face "
-                                   << check.area << ", allowance " << check.allowance;
-    }
-    for (size_t i = 0; i < a.children.size(); ++i) walk(a.children[i], b.children[i]);
-  };
-  walk(exact.root, meshed.root);
-  EXPECT_GT(faces, 0);
+  const auto checks = check_face_areas(exact, meshed, d);
+  for (const auto& [face, check] : checks)
+    EXPECT_FALSE(check.beyond()) << display_name(*face) << ": mesh " << check.mesh_area << ", face " << check.area
+                                 << ", allowance " << check.allowance;
+  const size_t faces = checks.size();
+  EXPECT_GT(faces, 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Library, LibraryFaceAreas, ::testing::ValuesIn(library_parts()),

@@ -134,7 +134,7 @@ TEST(RepairTrimmingLoops, ABilinearPatchIsWidenedExactly) {
   EXPECT_EQ(t.surface.v_end(), 1.5);
   EXPECT_LE(worst_outside(t), 0.0);
   // The same plane: (u, v) -> (2u, v, v) before and after.
-  for (const Eigen::Vector2d uv : {Eigen::Vector2d(-0.5, 0.2), Eigen::Vector2d(0.3, 1.5), Eigen::Vector2d(0.8, 0.7)})
+  for (const Eigen::Vector2d& uv : {Eigen::Vector2d(-0.5, 0.2), Eigen::Vector2d(0.3, 1.5), Eigen::Vector2d(0.8, 0.7)})
     EXPECT_LT((surface_point(t.surface, uv.x(), uv.y()) - Eigen::Vector3d(2 * uv.x(), uv.y(), uv.y())).norm(), 1e-14);
 }
 
