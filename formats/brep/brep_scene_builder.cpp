@@ -12,6 +12,7 @@
 #include "formats/brep/face_mesh.hpp"
 #include "formats/brep/face_to_trimmed_surface.hpp"
 #include "formats/brep/occt_errors.hpp"
+#include "formats/brep/rebuild_stray_pcurves.hpp"
 #include "formats/brep/surface_type_name.hpp"
 
 namespace cadnurbs {
@@ -34,9 +35,11 @@ const BrepSceneBuilder::Converted& BrepSceneBuilder::convert(const TopoDS_Face& 
   result.surface_type = surface_type_name(face);
   try {
     OCC_CATCH_SIGNALS
+    result.repairs = rebuild_stray_pcurves(face, stray_pcurve_limit(),
+                                           [this](const TopoDS_Edge& edge) { return edges_.number(edge); });
     TrimmedSurface trimmed = face_to_trimmed_surface(face, edges_);
     // The one check of loops every output sees (core/repair_trimming_loops): what it refuses is meshed.
-    result.repairs = repair_trimming_loops(trimmed, "face");
+    for (auto& line : repair_trimming_loops(trimmed, "face")) result.repairs.push_back(std::move(line));
     result.geometry = std::move(trimmed);
   } catch (const Standard_Failure& failure) {
     result.fallback_reason = occt_failure_text(failure);

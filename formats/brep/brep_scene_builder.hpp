@@ -43,9 +43,13 @@ class BrepSceneBuilder {
     Geometry geometry;
     std::string surface_type;
     std::string fallback_reason;  // empty: a trimmed NURBS
-    std::vector<std::string> repairs;  // what repair_trimming_loops did to its loops
+    std::vector<std::string> repairs;  // pcurves rebuilt (rebuild_stray_pcurves), then what
+                                       // repair_trimming_loops did to its loops
   };
   const Converted& convert(const TopoDS_Face& face);
+  // A pcurve further than this from its edge is rebuilt from the edge's 3D curve (rebuild_stray_pcurves):
+  // a tenth of the default deviation, which the mesh deflection is (1e-3 of the bounding-box diagonal).
+  double stray_pcurve_limit() const { return 0.1 * deflection_; }
   void add_faces(SceneNode& node, const std::string& node_path, const std::vector<TopoDS_Face>& faces,
                  const ShapeColours& colours);
 
