@@ -12,6 +12,7 @@
 #include "analysis/tessellate_to_deviation.hpp"
 #include "analysis/weld_exact.hpp"
 #include "core/bounding_box.hpp"
+#include "core/repair_trimming_loops.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 #include "formats/vrml/vrml_writer.hpp"
 
@@ -40,10 +41,23 @@ long shared_edges(const Scene& scene) {
 
 }  // namespace
 
+EdgeCounts read_back_edges(const Scene& source, VrmlEncoding encoding, bool compact, double deviation,
+                           SewingReport* sewing, TessellationReport* report) {
+  const double diagonal = scene_bounding_box(source).diagonal().norm();
+  const double tau = 1e-6 * diagonal;  // the writer's default precision
+  VrmlWriteOptions options;
+  options.encoding = encoding;
+  options.coordinate_tolerance = tau;
+  Scene read = parse_vrml(format_vrml(compact ? compact_scene(source, tau) : source, options), "read back");
+  repair_trimming_loops(read);  // as every reader's output on its way into convert (load_scene)
+  const Scene sewn = sew_faces(read, sewing_tolerance(diagonal, deviation), sewing);
+  TessellationReport own_report;
+  return open_edges(sewn, deviation, report ? *report : own_report);
+}
+
 void check_read_back_watertight(const Scene& source, const std::string& name) {
   const double diagonal = scene_bounding_box(source).diagonal().norm();
   const double d = 0.01 * diagonal;
-  const double tau = 1e-6 * diagonal;  // the writer's default precision
   TessellationReport step_report;
   const EdgeCounts step = open_edges(source, d, step_report);
   const long step_shared = shared_edges(source);
@@ -56,15 +70,9 @@ void check_read_back_watertight(const Scene& source, const std::string& name) {
   };
   for (const Form form : {Form{"x3dv", VrmlEncoding::x3d_classic, true}, Form{"x3dv --exact-nurbs", VrmlEncoding::x3d_classic, false},
                           Form{"wrl", VrmlEncoding::vrml97, true}, Form{"x3d", VrmlEncoding::x3d_xml, true}}) {
-    VrmlWriteOptions options;
-    options.encoding = form.encoding;
-    options.coordinate_tolerance = tau;
-    const Scene read = parse_vrml(format_vrml(form.compact ? compact_scene(source, tau) : source, options),
-                                  name + " " + form.what);
     SewingReport sewing;
-    const Scene sewn = sew_faces(read, sewing_tolerance(diagonal, d), &sewing);
     TessellationReport report;
-    const EdgeCounts back = open_edges(sewn, d, report);
+    const EdgeCounts back = read_back_edges(source, form.encoding, form.compact, d, &sewing, &report);
     std::printf("  %-18s %ld shared edges (%ld cuts, widest gap %.3g), %ld open and %ld point pieces; %ld boundary, "
                 "%ld non-manifold, %d unshared uses\n",
                 form.what, sewing.shared_edges, sewing.cuts, sewing.widest_gap, sewing.open_pieces, sewing.point_pieces,

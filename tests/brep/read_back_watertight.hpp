@@ -12,10 +12,20 @@
 // Reports failures through GoogleTest and prints one line of figures per form.
 #include <string>
 
+#include "analysis/count_boundary_edges.hpp"
+#include "analysis/sew_faces.hpp"
+#include "analysis/tessellate_to_deviation.hpp"
 #include "core/scene.hpp"
+#include "formats/vrml/vrml_writer.hpp"
 
 namespace cadnurbs::test {
 
 void check_read_back_watertight(const Scene& source, const std::string& name);
+
+// One form of it: `source` written (compact_scene first when `compact`) at the writer's default
+// precision, read back, its loops repaired (as `convert` does to every input), sewn and meshed at `deviation`; the welded mesh's edge counts (sewing and
+// tessellation reports to the pointers given).
+EdgeCounts read_back_edges(const Scene& source, VrmlEncoding encoding, bool compact, double deviation,
+                           SewingReport* sewing = nullptr, TessellationReport* report = nullptr);
 
 }  // namespace cadnurbs::test
