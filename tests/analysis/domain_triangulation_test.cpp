@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "analysis/domain_triangulation.hpp"
+#include "core/polygon_2d.hpp"
 
 namespace cadnurbs {
 namespace {
@@ -87,6 +88,24 @@ TEST(DomainTriangulation, SplittingAConstrainedEdgeKeepsTheArea) {
   EXPECT_FALSE(dt.is_constrained(outer[0], outer[1]));
   EXPECT_NEAR(inside_area(dt), 1.0, 1e-15);
   EXPECT_EQ(dt.inside_triangles().size(), 5u);  // 4 vertices, the centre and the split point
+}
+
+// LED_D10.0mm.step's plane: a round hole touches the outer loop, which runs along the domain's edge, and
+// the two loops share the tiny side between the points where they meet. One CGAL constraint there, two
+// loop sides: even-odd it bounds nothing, so the hole stays a hole (its triangles were counted in when
+// crossing that side went one level deeper: the face's mesh had 6x its area).
+TEST(DomainTriangulation, AHoleSharingASideWithItsOuterLoopStaysAHole) {
+  for (const bool split_it : {false, true}) {
+    DomainTriangulation dt(1, 1);
+    const int p = dt.insert({0, 0.5}), q = dt.insert({0, 0.5 + 1e-8});  // the shared side, on the edge u = 0
+    const int a = dt.insert({0, 0}), b = dt.insert({1, 0}), c = dt.insert({1, 1}), d = dt.insert({0, 1});
+    dt.insert_loop({a, b, c, d, q, p});  // the unit square through p and q, counter-clockwise
+    const int e = dt.insert({0.25, 0.25}), f = dt.insert({0.25, 0.75});
+    dt.insert_loop({p, q, f, e});  // the hole: a triangle-like quad with the side p q on u = 0
+    if (split_it) dt.split_constrained_edge(p, q, {0, 0.5 + 5e-9});
+    const double hole = std::abs(polygon_signed_area({dt.uv(p), dt.uv(q), dt.uv(f), dt.uv(e)}));  // 0.0625
+    EXPECT_NEAR(inside_area(dt), 1.0 - hole, 1e-12) << "split " << split_it;
+  }
 }
 
 }  // namespace
