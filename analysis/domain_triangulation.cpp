@@ -5,9 +5,9 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
-#include <algorithm>
 #include <deque>
-#include <map>
+
+#include "analysis/loop_sides.hpp"
 
 namespace cadnurbs {
 
@@ -32,12 +32,7 @@ struct DomainTriangulation::Impl {
   Cdt cdt;
   std::vector<Cdt::Vertex_handle> handles;
   std::vector<Eigen::Vector2d> uvs;
-  // How many loop sides run along each constrained edge (by its vertex ids, smaller first). Two loops
-  // that share a side (a hole touching its outer loop along a tiny edge) make one CGAL constraint there,
-  // but even-odd it bounds nothing: crossing it keeps the nesting level.
-  std::map<std::pair<int, int>, int> sides;
-
-  static std::pair<int, int> key(int a, int b) { return std::minmax(a, b); }
+  LoopSides<Cdt> sides;  // how many loop sides run along each constraint (loop_sides.hpp)
 
   int add(Cdt::Vertex_handle v, const Eigen::Vector2d& uv) {
     v->info().value = static_cast<int>(handles.size());
@@ -76,7 +71,7 @@ void DomainTriangulation::insert_loop(const std::vector<int>& ids) {
     const int a = ids[i], b = ids[(i + 1) % ids.size()];
     if (a != b) {
       impl_->cdt.insert_constraint(impl_->handles[a], impl_->handles[b]);
-      ++impl_->sides[Impl::key(a, b)];
+      impl_->sides.add(impl_->handles[a], impl_->handles[b]);
     }
     impl_->name_new_vertices();
   }
@@ -90,12 +85,7 @@ int DomainTriangulation::split_constrained_edge(int a, int b, const Eigen::Vecto
   const int m = insert(uv);
   cdt.insert_constraint(impl_->handles[a], impl_->handles[m]);
   cdt.insert_constraint(impl_->handles[m], impl_->handles[b]);
-  const auto sides = impl_->sides.find(Impl::key(a, b));
-  if (sides != impl_->sides.end()) {
-    const int count = sides->second;
-    impl_->sides.erase(sides);
-    impl_->sides[Impl::key(a, m)] = impl_->sides[Impl::key(m, b)] = count;
-  }
+  impl_->sides.split(impl_->handles[a], impl_->handles[b], impl_->handles[m]);
   impl_->name_new_vertices();
   return m;
 }
@@ -113,13 +103,7 @@ const Eigen::Vector2d& DomainTriangulation::uv(int id) const { return impl_->uvs
 std::vector<std::array<int, 3>> DomainTriangulation::inside_triangles() const {
   Cdt& cdt = impl_->cdt;
   // Nesting level by flood fill: crossing a constrained edge goes one level deeper, unless an even
-  // number of loop sides run along it (edges CGAL split at crossings count as one side).
-  auto bounds = [&](Cdt::Face_handle f, int i) {
-    if (!cdt.is_constrained({f, i})) return false;
-    const int a = f->vertex(Cdt::cw(i))->info().value, b = f->vertex(Cdt::ccw(i))->info().value;
-    const auto sides = impl_->sides.find(Impl::key(a, b));
-    return sides == impl_->sides.end() || sides->second % 2 == 1;
-  };
+  // number of loop sides run along it (loop_sides.hpp).
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
   std::deque<Cdt::Face_handle> next_level{cdt.infinite_face()};
   int level = 0;
@@ -136,7 +120,7 @@ std::vector<std::array<int, 3>> DomainTriangulation::inside_triangles() const {
       for (int i = 0; i < 3; ++i) {
         auto n = f->neighbor(i);
         if (n->info() != -1) continue;
-        if (bounds(f, i)) {
+        if (impl_->sides.bounds(cdt, f, i)) {
           next_level.push_back(n);
         } else {
           n->info() = -2;

@@ -8,6 +8,8 @@
 #include <list>
 #include <stdexcept>
 
+#include "analysis/loop_sides.hpp"
+
 namespace cadnurbs {
 
 namespace {
@@ -19,8 +21,8 @@ using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
 
 // Nesting level of every face: 0 outside, 1 inside an outer loop, 2 in a hole, ... (flood fill that
-// crosses one constrained edge per level).
-void mark_nesting(Cdt& cdt) {
+// crosses one loop side per level, loop_sides.hpp).
+void mark_nesting(Cdt& cdt, const LoopSides<Cdt>& sides) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
   std::list<Cdt::Edge> border;
   auto flood = [&](Cdt::Face_handle start, int level) {
@@ -34,7 +36,7 @@ void mark_nesting(Cdt& cdt) {
       for (int i = 0; i < 3; ++i) {
         auto n = f->neighbor(i);
         if (n->info() != -1) continue;
-        if (cdt.is_constrained(Cdt::Edge(f, i))) border.emplace_back(f, i);
+        if (sides.bounds(cdt, f, i)) border.emplace_back(f, i);
         else queue.push_back(n);
       }
     }
@@ -53,6 +55,7 @@ void mark_nesting(Cdt& cdt) {
 PlanarTriangulation triangulate_polygon(const std::vector<std::vector<Eigen::Vector2d>>& loops,
                                         const std::vector<Eigen::Vector2d>& interior_points) {
   Cdt cdt;
+  LoopSides<Cdt> sides;
   PlanarTriangulation out;
   // A vertex that already exists keeps its first index; a new one takes the point's index.
   auto add = [&](const Eigen::Vector2d& p) {
@@ -68,7 +71,10 @@ PlanarTriangulation triangulate_polygon(const std::vector<std::vector<Eigen::Vec
     for (const auto& p : loop) handles.push_back(add(p));
     for (size_t i = 0; i < handles.size(); ++i) {
       auto a = handles[i], b = handles[(i + 1) % handles.size()];
-      if (a != b) cdt.insert_constraint(a, b);
+      if (a != b) {
+        cdt.insert_constraint(a, b);
+        sides.add(a, b);
+      }
     }
   }
   // Crossing loop edges create vertices the loop points above did not name.
@@ -84,7 +90,7 @@ PlanarTriangulation triangulate_polygon(const std::vector<std::vector<Eigen::Vec
     }
   }
   for (const auto& p : interior_points) add(p);
-  mark_nesting(cdt);
+  mark_nesting(cdt, sides);
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     if (f->info() % 2 == 1) out.triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
   return out;

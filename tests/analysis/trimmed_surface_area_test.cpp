@@ -42,6 +42,21 @@ TEST(TrimmedSurfaceArea, DiscAreaFromATrimCurveOffTheKnotLines) {
   EXPECT_NEAR(trimmed_surface_area(t, 1e-9), exact, 1e-6 * exact);
 }
 
+// LED_D5.0mm-3.step's plane: a hole that shares a tiny side with its outer loop on the domain's edge.
+// `info` gave the outer loop's area with the hole not taken out (25.6 mm^2 for 6.0) until the even-odd
+// fill learnt that a side two loops share bounds nothing (analysis/loop_sides.hpp).
+TEST(TrimmedSurfaceArea, AHoleSharingASideWithItsOuterLoopIsTakenOut) {
+  TrimmedSurface t = test::trimmed_square(10, 0.4, 0.15);
+  const Eigen::Vector2d p(0, 0.5), q(0, 0.5 + 1e-8);
+  TrimLoop outer, hole;
+  outer.segments.emplace_back(Polyline2D{{{0, 0}, {1, 0}, {1, 1}, {0, 1}, q, p, {0, 0}}});
+  hole.segments.emplace_back(Polyline2D{{p, q, {0.25, 0.75}, {0.25, 0.25}, p}});
+  t.loops = {outer, hole};
+  const double hole_area = 0.25 * (1e-8 + 0.5) / 2;  // a trapezoid: sides 1e-8 (p q) and 0.5 apart by 0.25
+  const double exact = 100 * (1 - hole_area);
+  EXPECT_NEAR(trimmed_surface_area(t, 1e-9), exact, 1e-6 * exact);
+}
+
 TEST(TrimmedSurfaceArea, RefusesBadInput) {
   EXPECT_THROW(trimmed_surface_area(test::sphere(1), 0.0), GeometryError);
   TrimmedSurface bad = test::sphere(1);
