@@ -3,8 +3,10 @@
 // (even-odd). Loops are inserted as constraints side by side; where two loop sides run along the same
 // edge (a hole that shares a tiny side with its outer loop, as KiCad's LED domes do), CGAL keeps one
 // constraint, yet even-odd that edge bounds nothing: crossing it must keep the nesting level. Used by
-// the two flood fills that mark the region (domain_triangulation, triangulate_polygon). Header-only:
-// templated on the triangulation type, whose vertex handles key the count.
+// the tessellator's flood fill (domain_triangulation), whose loops move as refinement splits their
+// sides; triangulate_polygon, whose loops are fixed, decides each region with core/point_in_loops
+// instead, which also copes with sides that overlap without sharing both ends. Header-only: templated
+// on the triangulation type, whose vertex handles key the count.
 #include <map>
 #include <utility>
 

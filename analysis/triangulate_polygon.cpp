@@ -5,10 +5,10 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
-#include <list>
+#include <cmath>
 #include <stdexcept>
 
-#include "analysis/loop_sides.hpp"
+#include "core/point_in_loops.hpp"
 
 namespace cadnurbs {
 
@@ -20,34 +20,42 @@ using FaceBase = CGAL::Triangulation_face_base_with_info_2<int, Kernel, CGAL::Co
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
 
-// Nesting level of every face: 0 outside, 1 inside an outer loop, 2 in a hole, ... (flood fill that
-// crosses one loop side per level, loop_sides.hpp).
-void mark_nesting(Cdt& cdt, const LoopSides<Cdt>& sides) {
+// 1 inside, 0 outside, for every finite face. Faces joined by unconstrained edges form regions between
+// loop sides, each inside or outside as a whole; the project's one even-odd test (core/point_in_loops)
+// decides each region at the centroid of its largest triangle. (Counting constraint crossings instead
+// fails where loops share or overlap a side, which CGAL keeps as one constraint: a hole touching its
+// outer loop along a tiny edge, as in KiCad's LED domes, was left in.)
+void mark_inside(Cdt& cdt, const PointInLoops& region) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
-  std::list<Cdt::Edge> border;
-  auto flood = [&](Cdt::Face_handle start, int level) {
-    if (start->info() != -1) return;
-    std::list<Cdt::Face_handle> queue{start};
-    while (!queue.empty()) {
-      auto f = queue.front();
-      queue.pop_front();
-      if (f->info() != -1) continue;
-      f->info() = level;
+  std::vector<Cdt::Face_handle> largest;  // per region
+  std::vector<double> largest_area;
+  for (auto start = cdt.finite_faces_begin(); start != cdt.finite_faces_end(); ++start) {
+    if (start->info() != -1) continue;
+    const int id = static_cast<int>(largest.size());
+    largest.push_back(start);
+    largest_area.push_back(-1);
+    std::vector<Cdt::Face_handle> stack{start};
+    start->info() = id;
+    while (!stack.empty()) {
+      const auto f = stack.back();
+      stack.pop_back();
+      const double area = std::abs(CGAL::area(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+      if (area > largest_area[id]) largest_area[id] = area, largest[id] = f;
       for (int i = 0; i < 3; ++i) {
-        auto n = f->neighbor(i);
-        if (n->info() != -1) continue;
-        if (sides.bounds(cdt, f, i)) border.emplace_back(f, i);
-        else queue.push_back(n);
+        const auto n = f->neighbor(i);
+        if (n->info() != -1 || cdt.is_infinite(n) || cdt.is_constrained(Cdt::Edge(f, i))) continue;
+        n->info() = id;
+        stack.push_back(n);
       }
     }
-  };
-  flood(cdt.infinite_face(), 0);
-  while (!border.empty()) {
-    const auto e = border.front();
-    border.pop_front();
-    auto n = e.first->neighbor(e.second);
-    if (n->info() == -1) flood(n, e.first->info() + 1);
   }
+  std::vector<int> inside(largest.size());
+  for (size_t id = 0; id < largest.size(); ++id) {
+    const auto c = CGAL::centroid(largest[id]->vertex(0)->point(), largest[id]->vertex(1)->point(),
+                                  largest[id]->vertex(2)->point());
+    inside[id] = region.inside(Eigen::Vector2d(c.x(), c.y())) ? 1 : 0;
+  }
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) f->info() = inside[f->info()];
 }
 
 }  // namespace
@@ -55,7 +63,6 @@ void mark_nesting(Cdt& cdt, const LoopSides<Cdt>& sides) {
 PlanarTriangulation triangulate_polygon(const std::vector<std::vector<Eigen::Vector2d>>& loops,
                                         const std::vector<Eigen::Vector2d>& interior_points) {
   Cdt cdt;
-  LoopSides<Cdt> sides;
   PlanarTriangulation out;
   // A vertex that already exists keeps its first index; a new one takes the point's index.
   auto add = [&](const Eigen::Vector2d& p) {
@@ -71,10 +78,7 @@ PlanarTriangulation triangulate_polygon(const std::vector<std::vector<Eigen::Vec
     for (const auto& p : loop) handles.push_back(add(p));
     for (size_t i = 0; i < handles.size(); ++i) {
       auto a = handles[i], b = handles[(i + 1) % handles.size()];
-      if (a != b) {
-        cdt.insert_constraint(a, b);
-        sides.add(a, b);
-      }
+      if (a != b) cdt.insert_constraint(a, b);
     }
   }
   // Crossing loop edges create vertices the loop points above did not name.
@@ -90,9 +94,9 @@ PlanarTriangulation triangulate_polygon(const std::vector<std::vector<Eigen::Vec
     }
   }
   for (const auto& p : interior_points) add(p);
-  mark_nesting(cdt, sides);
+  mark_inside(cdt, PointInLoops(loops));
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    if (f->info() % 2 == 1) out.triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+    if (f->info() == 1) out.triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
   return out;
 }
 
