@@ -5,8 +5,8 @@
 // constraint, yet even-odd that edge bounds nothing: crossing it must keep the nesting level. Used by
 // the tessellator's flood fill (domain_triangulation), whose loops move as refinement splits their
 // sides; triangulate_polygon, whose loops are fixed, decides each region with core/point_in_loops
-// instead, which also copes with sides that overlap without sharing both ends. Header-only: templated
-// on the triangulation type, whose vertex handles key the count.
+// instead, the test the area and deviation measures share. Header-only: templated on the
+// triangulation type, whose vertex handles key the count.
 #include <map>
 #include <utility>
 

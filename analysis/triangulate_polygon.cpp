@@ -22,9 +22,9 @@ using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_
 
 // 1 inside, 0 outside, for every finite face. Faces joined by unconstrained edges form regions between
 // loop sides, each inside or outside as a whole; the project's one even-odd test (core/point_in_loops)
-// decides each region at the centroid of its largest triangle. (Counting constraint crossings instead
-// fails where loops share or overlap a side, which CGAL keeps as one constraint: a hole touching its
-// outer loop along a tiny edge, as in KiCad's LED domes, was left in.)
+// decides each region at the centroid of its largest triangle. (Counting constraint crossings alone
+// fails where two loops share a side, which CGAL keeps as one constraint: a hole touching its outer
+// loop along a tiny edge, as in KiCad's LED domes, was left in.)
 void mark_inside(Cdt& cdt, const PointInLoops& region) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
   std::vector<Cdt::Face_handle> largest;  // per region

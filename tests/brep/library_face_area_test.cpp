@@ -2,13 +2,10 @@
 // mesh area within check_face_area's allowance of its trimmed NURBS area.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-
 #include "analysis/face_area_check.hpp"
 #include "analysis/tessellate_to_deviation.hpp"
 #include "core/bounding_box.hpp"
 #include "corpus_manifest.hpp"
-#include "formats/step/step_reader.hpp"
 #include "part_library.hpp"
 
 namespace cadnurbs::test {
@@ -17,9 +14,7 @@ namespace {
 class LibraryFaceAreas : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LibraryFaceAreas, NoFaceBeyondItsAllowance) {
-  const std::string path = library_file(GetParam(), ".step");
-  ASSERT_TRUE(std::filesystem::exists(path)) << path << " (scripts/fetch-part-library.sh fetches it)";
-  const Scene exact = read_step(path).scene;
+  const Scene exact = read_library_step(GetParam());
   const double d = 1e-3 * scene_bounding_box(exact).diagonal().norm();
   const Scene meshed = tessellate_to_deviation(exact, d);
   const auto checks = check_face_areas(exact, meshed, d);

@@ -1,10 +1,7 @@
 // Our own NURBS files of 20 library parts mesh as watertight as the STEP files (read_back_watertight.hpp).
 #include <gtest/gtest.h>
 
-#include <filesystem>
-
 #include "corpus_manifest.hpp"
-#include "formats/step/step_reader.hpp"
 #include "part_library.hpp"
 #include "read_back_watertight.hpp"
 
@@ -14,9 +11,7 @@ namespace {
 class LibraryWatertight : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LibraryWatertight, ReadBackAsClosedAsTheStep) {
-  const std::string path = library_file(GetParam(), ".step");
-  ASSERT_TRUE(std::filesystem::exists(path)) << path << " (scripts/fetch-part-library.sh fetches it)";
-  check_read_back_watertight(read_step(path).scene, library_part_name(GetParam()));
+  check_read_back_watertight(read_library_step(GetParam()), library_part_name(GetParam()));
 }
 
 INSTANTIATE_TEST_SUITE_P(Library, LibraryWatertight, ::testing::ValuesIn(library_parts()),

@@ -1,6 +1,10 @@
 #include "part_library.hpp"
 
 #include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+#include "formats/step/step_reader.hpp"
 
 namespace cadnurbs::test {
 
@@ -37,6 +41,13 @@ std::string library_file(const std::string& part, const std::string& ext) {
   else cache = std::string(std::getenv("HOME") ? std::getenv("HOME") : "") + "/.cache/cadnurbs";
   const std::string family = part.substr(0, part.find('/'));
   return cache + "/kicad-packages3d-6.0.10-1/" + family + ".3dshapes/" + library_part_name(part) + ext;
+}
+
+Scene read_library_step(const std::string& part) {
+  const std::string path = library_file(part, ".step");
+  if (!std::filesystem::exists(path))
+    throw std::runtime_error(path + " does not exist (scripts/fetch-part-library.sh fetches it)");
+  return read_step(path).scene;
 }
 
 std::string library_part_name(const std::string& part) { return part.substr(part.find('/') + 1); }

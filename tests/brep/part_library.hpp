@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/scene.hpp"
+
 namespace cadnurbs::test {
 
 // "FAMILY/NAME" of each part.
@@ -13,6 +15,10 @@ const std::vector<std::string>& library_parts();
 // The part's file with extension `ext` (".step" or ".wrl", KiCad's shipped mesh) in the cache where
 // scripts/fetch-part-library.sh puts the library (its own default, or CADNURBS_CACHE).
 std::string library_file(const std::string& part, const std::string& ext);
+
+// The part's STEP file read (read_step's scene); throws std::runtime_error naming the file when the
+// library has not been fetched.
+Scene read_library_step(const std::string& part);
 
 // NAME of "FAMILY/NAME".
 std::string library_part_name(const std::string& part);
