@@ -1,0 +1,172 @@
+#include "formats/cnb/cnb_container.hpp"
+
+#include <zlib.h>
+
+#include <stdexcept>
+
+#include "formats/cnb/adaptive_arithmetic_coder.hpp"
+#include "formats/common/file_io.hpp"
+
+namespace cadnurbs::cnb {
+
+namespace {
+
+constexpr char magic[4] = {'\x89', 'C', 'N', 'B'};
+enum CoderId : uint8_t { deflate_id = 1, arithmetic_id = 2 };
+// Raw deflate cannot expand more than 1032:1.
+constexpr size_t deflate_expansion_limit = 1032;
+
+void put_u32(std::string& s, uint32_t v) {
+  for (int i = 0; i < 4; ++i) s.push_back(static_cast<char>(v >> (8 * i)));
+}
+uint32_t get_u32(const std::string& s, size_t at) {
+  uint32_t v = 0;
+  for (int i = 0; i < 4; ++i) v |= static_cast<uint32_t>(static_cast<uint8_t>(s[at + i])) << (8 * i);
+  return v;
+}
+
+uint32_t crc(const std::string& s, size_t from, size_t count, uint32_t start = 0) {
+  uLong c = start ? start : crc32(0L, Z_NULL, 0);
+  c = crc32(c, reinterpret_cast<const Bytef*>(s.data() + from), static_cast<uInt>(count));
+  return static_cast<uint32_t>(c);
+}
+
+std::string deflate_raw(const std::string& bytes) {
+  z_stream z{};
+  if (deflateInit2(&z, 9, Z_DEFLATED, -15, 9, Z_DEFAULT_STRATEGY) != Z_OK) throw std::runtime_error("cnb: deflateInit2 failed");
+  std::string out(deflateBound(&z, bytes.size()), '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+  z.avail_in = static_cast<uInt>(bytes.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = static_cast<uInt>(out.size());
+  const int status = deflate(&z, Z_FINISH);
+  out.resize(z.total_out);
+  deflateEnd(&z);
+  if (status != Z_STREAM_END) throw std::runtime_error("cnb: deflate failed");
+  return out;
+}
+
+[[noreturn]] void refuse(const std::string& name, size_t at, const std::string& reason) {
+  throw FileError(name + ": byte " + std::to_string(at) + ": " + reason);
+}
+
+class OwnedBufferSource : public ByteSource {
+ public:
+  explicit OwnedBufferSource(std::string bytes) : bytes_(std::move(bytes)) {}
+  uint8_t next(int) override { return static_cast<uint8_t>(bytes_[position_++]); }
+
+ private:
+  std::string bytes_;
+  size_t position_ = 0;
+};
+
+class OwnedArithmeticSource : public ByteSource {
+ public:
+  explicit OwnedArithmeticSource(std::string coded) : coded_(std::move(coded)), decoder_(coded_.data(), coded_.size()) {}
+  uint8_t next(int context) override { return decoder_.next(context); }
+
+ private:
+  std::string coded_;
+  ArithmeticDecoder decoder_;
+};
+
+std::string inflate_raw(const std::string& file, size_t size, const std::string& name) {
+  std::string out(size, '\0');
+  z_stream z{};
+  if (inflateInit2(&z, -15) != Z_OK) throw std::runtime_error("cnb: inflateInit2 failed");
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(file.data() + header_size));
+  z.avail_in = static_cast<uInt>(file.size() - header_size);
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = static_cast<uInt>(out.size());
+  int status = inflate(&z, Z_FINISH);
+  // The buffer is full but the stream goes on: one more byte of room tells a stream that holds more than
+  // the header says from one that only has its end marker left.
+  bool more = false;
+  if (status != Z_STREAM_END && z.avail_out == 0) {
+    unsigned char extra = 0;
+    z.next_out = &extra;
+    z.avail_out = 1;
+    status = inflate(&z, Z_FINISH);
+    more = z.avail_out == 0;
+  }
+  const size_t produced = z.total_out, consumed = z.total_in;
+  const std::string message = z.msg ? z.msg : "";
+  inflateEnd(&z);
+  if (more)
+    refuse(name, 6, "the deflate stream holds more than the " + std::to_string(size) + " payload bytes the header promises");
+  if (status == Z_STREAM_END && produced == size && consumed == file.size() - header_size) return out;
+  if (status == Z_STREAM_END && produced < size)
+    refuse(name, 6, "the header promises " + std::to_string(size) + " payload bytes, the deflate stream holds " + std::to_string(produced));
+  if (status == Z_STREAM_END)
+    refuse(name, header_size + consumed, "bytes after the end of the deflate stream");
+  refuse(name, header_size + consumed, "damaged deflate stream" + (message.empty() ? std::string() : " (" + message + ")"));
+}
+
+}  // namespace
+
+std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteReport* report) {
+  if (payload.bytes().size() > 0xFFFFFFFFu) throw std::runtime_error("cnb: a payload above 4 GiB");
+  std::string coded;
+  uint8_t id = deflate_id;
+  std::string deflated, arithmetic;
+  if (choice != CnbOptions::Coder::arithmetic) deflated = deflate_raw(payload.bytes());
+  if (choice != CnbOptions::Coder::deflate) arithmetic = arithmetic_encode(payload.bytes(), payload.contexts());
+  if (choice == CnbOptions::Coder::deflate ||
+      (choice == CnbOptions::Coder::smallest && deflated.size() <= arithmetic.size())) {
+    coded = deflated;
+  } else {
+    coded = arithmetic;
+    id = arithmetic_id;
+  }
+  std::string file(magic, 4);
+  file.push_back(static_cast<char>(format_version));
+  file.push_back(static_cast<char>(id));
+  put_u32(file, static_cast<uint32_t>(payload.bytes().size()));
+  put_u32(file, static_cast<uint32_t>(coded.size()));
+  // The CRC covers the first 14 header bytes and the coded payload.
+  put_u32(file, crc(coded, 0, coded.size(), crc(file, 0, 14)));
+  file += coded;
+  if (report) {
+    report->payload_bytes = payload.bytes().size();
+    report->deflate_bytes = deflated.size();
+    report->arithmetic_bytes = arithmetic.size();
+    report->file_bytes = file.size();
+  }
+  return file;
+}
+
+OpenedPayload open_payload(const std::string& file, const std::string& name) {
+  for (size_t i = 0; i < 4; ++i) {
+    if (i >= file.size()) refuse(name, file.size(), "truncated: the file ends inside the magic number");
+    if (file[i] != magic[i]) refuse(name, i, "not a .cnb file (the magic number is \\x89CNB)");
+  }
+  if (file.size() < header_size)
+    refuse(name, file.size(), "truncated: the header needs " + std::to_string(header_size) + " bytes, the file has " + std::to_string(file.size()));
+  const uint8_t version = static_cast<uint8_t>(file[4]);
+  if (version != format_version)
+    refuse(name, 4, "version " + std::to_string(version) + " is not one this reader knows (" + std::to_string(format_version) + ")");
+  const size_t size = get_u32(file, 6), coded = get_u32(file, 10);
+  if (file.size() - header_size != coded)
+    refuse(name, std::min(file.size(), header_size + coded),
+           (file.size() - header_size < coded ? "truncated: the header promises " : "damaged: the header promises ") +
+               std::to_string(coded) + " coded bytes after byte " + std::to_string(header_size) + ", the file has " +
+               std::to_string(file.size() - header_size));
+  const uint32_t check = crc(file, header_size, coded, crc(file, 0, 14));
+  if (check != get_u32(file, 14))
+    refuse(name, 14, "damaged: the CRC-32 of the file does not match the one in its header");
+  const uint8_t id = static_cast<uint8_t>(file[5]);
+  OpenedPayload opened;
+  opened.size = size;
+  if (id == deflate_id) {
+    if (size > deflate_expansion_limit * coded + 64) refuse(name, 6, "a payload of " + std::to_string(size) + " bytes cannot come from " + std::to_string(coded) + " deflated bytes");
+    opened.source = std::make_unique<OwnedBufferSource>(inflate_raw(file, size, name));
+  } else if (id == arithmetic_id) {
+    if (size > arithmetic_expansion_limit * coded + 64) refuse(name, 6, "a payload of " + std::to_string(size) + " bytes cannot come from " + std::to_string(coded) + " coded bytes");
+    opened.source = std::make_unique<OwnedArithmeticSource>(file.substr(header_size));
+  } else {
+    refuse(name, 5, "unknown entropy coder " + std::to_string(id));
+  }
+  return opened;
+}
+
+}  // namespace cadnurbs::cnb

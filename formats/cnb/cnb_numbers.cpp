@@ -1,0 +1,159 @@
+#include "formats/cnb/cnb_numbers.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace cadnurbs::cnb {
+
+int64_t on_grid(double x, double step) {
+  const double n = std::round(x / step);
+  if (!std::isfinite(n) || std::abs(n) > 0x1p52)
+    throw std::invalid_argument("cnb: coordinate " + std::to_string(x) + " is " + std::to_string(std::abs(x / step)) +
+                                " steps of " + std::to_string(step) + " from 0; the maximum deviation is too small for the model");
+  return static_cast<int64_t>(n);
+}
+
+namespace {
+
+enum KnotMode : uint8_t { whole = 0, decimal = 1, raw = 2 };
+
+// The values as integers n_i with n_i / 10^k == value bitwise, for the smallest k in 0..17 that works.
+bool as_decimals(const std::vector<double>& values, int& k, std::vector<int64_t>& n) {
+  for (k = 0; k <= 17; ++k) {
+    const double scale = std::pow(10.0, k);  // exact up to 10^22
+    n.clear();
+    bool ok = true;
+    for (double v : values) {
+      const double m = std::round(v * scale);
+      if (!(std::abs(m) < 0x1p53) || m / scale != v) { ok = false; break; }
+      n.push_back(static_cast<int64_t>(m));
+    }
+    if (ok) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void write_knots(ByteWriter& out, const std::vector<double>& knots) {
+  std::vector<double> values;
+  std::vector<uint64_t> multiplicity;
+  for (double t : knots) {
+    if (!values.empty() && t == values.back()) ++multiplicity.back();
+    else { values.push_back(t); multiplicity.push_back(1); }
+  }
+  out.varuint(values.size(), Field::count);
+  int k = 0;
+  std::vector<int64_t> n;
+  if (as_decimals(values, k, n)) {
+    if (k == 0) out.byte(whole, Field::knot);
+    else { out.byte(decimal, Field::knot); out.byte(static_cast<uint8_t>(k), Field::knot); }
+    out.varsint(n[0], Field::knot);
+    for (size_t i = 1; i < n.size(); ++i) out.varuint(static_cast<uint64_t>(n[i] - n[i - 1] - 1), Field::knot);
+  } else {
+    out.byte(raw, Field::knot);
+    for (double v : values) out.float64(v);
+  }
+  for (uint64_t m : multiplicity) out.varuint(m - 1, Field::count);
+}
+
+std::vector<double> read_knots(ByteReader& in, size_t expected_count) {
+  const size_t start = in.offset();
+  const size_t m = in.count(2);
+  if (m == 0 || m > expected_count) in.fail(std::to_string(m) + " distinct knots for a vector of " + std::to_string(expected_count), start);
+  const size_t mode_at = in.offset();
+  const uint8_t mode = in.byte(Field::knot);
+  std::vector<double> values;
+  values.reserve(m);
+  if (mode == whole || mode == decimal) {
+    int k = 0;
+    if (mode == decimal) {
+      k = in.byte(Field::knot);
+      if (k < 1 || k > 17) in.fail("decimal knot exponent " + std::to_string(k) + " outside 1..17", mode_at + 1);
+    }
+    const double scale = std::pow(10.0, k);
+    int64_t n = in.varsint(Field::knot);
+    for (size_t i = 0; i < m; ++i) {
+      if (i > 0) {
+        const size_t at = in.offset();
+        const uint64_t step = in.varuint(Field::knot);
+        if (step >= 0x1p53 || static_cast<double>(n) + static_cast<double>(step) + 1 >= 0x1p53)
+          in.fail("knot difference " + std::to_string(step) + " out of range", at);
+        n += static_cast<int64_t>(step) + 1;
+      }
+      if (std::abs(static_cast<double>(n)) >= 0x1p53) in.fail("knot numerator out of range", in.offset());
+      values.push_back(static_cast<double>(n) / scale);
+    }
+  } else if (mode == raw) {
+    for (size_t i = 0; i < m; ++i) {
+      const size_t at = in.offset();
+      values.push_back(in.float64());
+      if (!std::isfinite(values.back()) || (i > 0 && !(values[i] > values[i - 1])))
+        in.fail("knot " + std::to_string(values.back()) + " is not finite or not above the previous one", at);
+    }
+  } else {
+    in.fail("unknown knot mode " + std::to_string(mode), mode_at);
+  }
+  std::vector<uint64_t> multiplicity(m);
+  uint64_t total = 0;
+  for (size_t i = 0; i < m; ++i) {
+    const size_t at = in.offset();
+    multiplicity[i] = in.varuint(Field::count) + 1;
+    if (multiplicity[i] == 0 || multiplicity[i] > expected_count - total)
+      in.fail("knot multiplicities exceed the " + std::to_string(expected_count) + " knots the net needs", at);
+    total += multiplicity[i];
+  }
+  if (total != expected_count)
+    in.fail("knot multiplicities add up to " + std::to_string(total) + ", the net needs " + std::to_string(expected_count), start);
+  std::vector<double> knots;
+  knots.reserve(expected_count);
+  for (size_t i = 0; i < m; ++i) knots.insert(knots.end(), multiplicity[i], values[i]);
+  return knots;
+}
+
+void write_weights(ByteWriter& out, const std::vector<double>& weights) {
+  if (weights.empty()) { out.byte(0, Field::weight); return; }
+  out.byte(1, Field::weight);
+  std::vector<double> table;
+  std::vector<uint64_t> index;
+  index.reserve(weights.size());
+  for (double w : weights) {
+    size_t i = 0;
+    while (i < table.size() && table[i] != w) ++i;  // tables are short: cos(θ/2) values and 1
+    if (i == table.size()) table.push_back(w);
+    index.push_back(i);
+  }
+  out.varuint(table.size(), Field::count);
+  for (double w : table) out.float64(w);
+  if (table.size() > 1)
+    for (uint64_t i : index) out.varuint(i, Field::weight);
+}
+
+std::vector<double> read_weights(ByteReader& in, size_t point_count) {
+  const size_t mode_at = in.offset();
+  const uint8_t mode = in.byte(Field::weight);
+  if (mode == 0) return {};
+  if (mode != 1) in.fail("unknown weight mode " + std::to_string(mode), mode_at);
+  const size_t start = in.offset();
+  const size_t t = in.count(8);
+  if (t == 0 || t > point_count) in.fail(std::to_string(t) + " distinct weights for " + std::to_string(point_count) + " points", start);
+  std::vector<double> table(t);
+  for (auto& w : table) {
+    const size_t at = in.offset();
+    w = in.float64();
+    if (!(w > 0) || !std::isfinite(w)) in.fail("weight " + std::to_string(w) + " is not positive and finite", at);
+  }
+  if (t == 1) return std::vector<double>(point_count, table[0]);
+  if (point_count > in.left()) in.fail(std::to_string(point_count) + " weight indices cannot fit in the " + std::to_string(in.left()) + " bytes left");
+  std::vector<double> weights(point_count);
+  for (auto& w : weights) {
+    const size_t at = in.offset();
+    const uint64_t i = in.varuint(Field::weight);
+    if (i >= t) in.fail("weight index " + std::to_string(i) + " outside the table of " + std::to_string(t), at);
+    w = table[i];
+  }
+  return weights;
+}
+
+}  // namespace cadnurbs::cnb

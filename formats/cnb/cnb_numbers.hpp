@@ -1,0 +1,32 @@
+#pragma once
+// The exact numbers of a .cnb payload: knot vectors (lossless: whole numbers, decimals, or raw float64)
+// and weights (lossless: a table of the distinct values, one index per point), and the rounding of
+// coordinates to a grid. docs/cnb.md, "Knot vector" and "Weights".
+#include <cstdint>
+#include <vector>
+
+#include "formats/cnb/cnb_stream.hpp"
+
+namespace cadnurbs::cnb {
+
+// round(x / step) as an integer. Throws std::invalid_argument when |x / step| > 2^52 (the step is too
+// fine for the coordinate: a maximum deviation too small for the model's size) or x is not finite.
+int64_t on_grid(double x, double step);
+
+// Distinct values and multiplicities; values as whole numbers, as decimals n / 10^k that give back the
+// same float64, or as raw float64.
+void write_knots(ByteWriter& out, const std::vector<double>& knots);
+// Refuses (PayloadError) a vector whose multiplicities do not add up to `expected_count`, before
+// allocating it, and values that are not increasing.
+std::vector<double> read_knots(ByteReader& in, size_t expected_count);
+
+// Mode 0 (polynomial) or 1 (table of distinct float64 values; an index per point when there are two or
+// more).
+void write_weights(ByteWriter& out, const std::vector<double>& weights);
+// `point_count` points; refuses a table larger than that, an index outside it, a weight <= 0.
+std::vector<double> read_weights(ByteReader& in, size_t point_count);
+
+// Orders and control point counts: refused above these before anything is allocated.
+constexpr uint64_t largest_order = 64;
+
+}  // namespace cadnurbs::cnb

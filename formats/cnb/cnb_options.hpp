@@ -1,0 +1,29 @@
+#pragma once
+// What the .cnb writer is asked for: the largest deviation of the decoded geometry, and how to spend it.
+namespace cadnurbs {
+
+struct CnbOptions {
+  // D > 0, in scene units, in world coordinates: no decoded point of a surface, trimming boundary, curve
+  // or mesh lies farther than D from the original (by the bound stated in docs/cnb.md).
+  double max_deviation = 1.0;
+  // The part of D that trimming curves may use (their quantisation in (u,v)); control points and mesh
+  // vertices get the rest. In (0, 1).
+  double trim_share = 0.25;
+  // The entropy stage: the smaller of deflate and the adaptive arithmetic coder, or one of them.
+  enum class Coder { smallest, deflate, arithmetic } coder = Coder::smallest;
+};
+
+// What the writer chose and what it guarantees.
+struct CnbWriteReport {
+  double point_step = 0;   // q: the grid of control points and mesh vertices (scene units)
+  double point_bound = 0;  // largest world move of a control point or vertex: q·√3/2·(largest world scale)
+  double trim_bound = 0;   // largest world move of a trimming boundary point caused by the trims' own grid
+  double deviation_bound() const { return point_bound + trim_bound; }
+  size_t payload_bytes = 0;     // decoded payload
+  size_t deflate_bytes = 0;     // the payload deflated (0 when not tried)
+  size_t arithmetic_bytes = 0;  // the payload arithmetic-coded (0 when not tried)
+  size_t file_bytes = 0;
+  int parallelogram_nets = 0, row_nets = 0;  // which predictor each surface's net took
+};
+
+}  // namespace cadnurbs

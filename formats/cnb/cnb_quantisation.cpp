@@ -1,0 +1,61 @@
+#include "formats/cnb/cnb_quantisation.hpp"
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace cadnurbs::cnb {
+
+double transform_scale(const Eigen::Affine3d& transform) {
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(transform.linear());
+  return svd.singularValues()(0);
+}
+
+namespace {
+void largest_scale(const SceneNode& node, const Eigen::Affine3d& parent, double& largest) {
+  const Eigen::Affine3d world = parent * node.transform;
+  if (!node.shapes.empty()) largest = std::max(largest, transform_scale(world));
+  for (const auto& child : node.children) largest_scale(child, world, largest);
+}
+
+void check(const CnbOptions& o) {
+  if (!(o.max_deviation > 0) || !std::isfinite(o.max_deviation))
+    throw std::invalid_argument("cnb: the maximum deviation must be positive and finite");
+  if (!(o.trim_share > 0 && o.trim_share < 1)) throw std::invalid_argument("cnb: trim_share must lie in (0, 1)");
+}
+}  // namespace
+
+double largest_world_scale(const Scene& scene) {
+  double largest = 0.0;
+  largest_scale(scene.root, Eigen::Affine3d::Identity(), largest);
+  return largest > 0.0 ? largest : 1.0;
+}
+
+double point_step(const Scene& scene, const CnbOptions& options) {
+  check(options);
+  return 2.0 * (1.0 - options.trim_share) * options.max_deviation / (std::sqrt(3.0) * largest_world_scale(scene));
+}
+
+int trim_step_exponent(const NurbsSurface& surface, const CnbOptions& options, double world_scale) {
+  check(options);
+  const double bound = surface_derivative_bound(surface) * std::max(world_scale, 1e-300);
+  double step;
+  if (bound > 0.0 && std::isfinite(bound)) {
+    step = options.trim_share * options.max_deviation / (2.0 * bound);
+  } else {
+    const double domain = std::max(surface.u_end() - surface.u_start(), surface.v_end() - surface.v_start());
+    step = domain > 0 ? domain / 1024.0 : 1.0;
+  }
+  // floor(log2(step)), then one lower if rounding made 2^e larger than step.
+  int e = static_cast<int>(std::floor(std::log2(step)));
+  e = std::clamp(e, -100, 100);
+  while (e > -100 && std::ldexp(1.0, e) > step) --e;
+  return e;
+}
+
+double trim_bound(const NurbsSurface& surface, int exponent, double world_scale) {
+  return 2.0 * surface_derivative_bound(surface) * std::ldexp(1.0, exponent) * world_scale;
+}
+
+}  // namespace cadnurbs::cnb

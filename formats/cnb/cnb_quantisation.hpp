@@ -1,0 +1,39 @@
+#pragma once
+// The .cnb quantisation steps, chosen as the coarsest whose bound keeps the decoded geometry within D.
+//
+// Control points: one grid of step q per scene, each coordinate rounded to the nearest multiple. A point
+// moves by at most q·√3/2. Knots are kept exactly and weights exactly, so every surface and curve point
+// is the same convex combination (same basis functions, same weights) of the moved control points as it
+// was of the originals, and so moves by at most the largest control point move (the convex-hull
+// property). Mesh vertices move by the same. In world coordinates the move is scaled by the largest
+// singular value of the shape's world transform, so q = 2·(1 - trim_share)·D / (√3·largest scale).
+//
+// Trimming curves: per face a grid of step s = 2^e in (u,v). A trim point moves by at most s per
+// coordinate (s/2 rounding, plus up to s/2 where a segment's start is snapped onto the previous end so
+// that loops stay closed). With L = surface_derivative_bound (|∂S/∂u|, |∂S/∂v| <= L), the image of the
+// trim on the (original) surface moves by at most L·(|Δu| + |Δv|) <= 2·L·s; e is the largest exponent
+// with 2·L·s·scale <= trim_share·D. On the decoded surface the boundary moves by at most the sum of the
+// two bounds, <= D.
+#include "core/scene.hpp"
+#include "formats/cnb/cnb_options.hpp"
+
+namespace cadnurbs::cnb {
+
+// Largest singular value of the linear part of every node's world transform that holds shapes (1 for
+// a scene without scaling).
+double largest_world_scale(const Scene& scene);
+
+// q as above. Throws std::invalid_argument for D or trim_share out of range.
+double point_step(const Scene& scene, const CnbOptions& options);
+
+// e as above, for a face whose world transform scales by at most `world_scale`; clamped to [-100, 100].
+// A surface with L = 0 (a point) gets 1/1024 of its domain.
+int trim_step_exponent(const NurbsSurface& surface, const CnbOptions& options, double world_scale);
+
+// The world bound 2·L·2^e·scale of that choice.
+double trim_bound(const NurbsSurface& surface, int exponent, double world_scale);
+
+// Largest singular value of a transform's linear part.
+double transform_scale(const Eigen::Affine3d& transform);
+
+}  // namespace cadnurbs::cnb

@@ -1,0 +1,130 @@
+#include "formats/cnb/cnb_reader.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "core/geometry_error.hpp"
+#include "formats/cnb/cnb_container.hpp"
+#include "formats/cnb/cnb_geometry.hpp"
+#include "formats/cnb/cnb_scene_layout.hpp"
+#include "formats/common/file_io.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+using namespace cnb;
+
+struct SceneDecoder {
+  ByteReader& in;
+  double q = 0;
+  int previous_edge = -1;
+
+  Colour colour() {
+    double c[3];
+    for (double& v : c) {
+      const size_t at = in.offset();
+      const uint64_t n = in.varuint(Field::raw);
+      if (n > 65535) in.fail("colour component " + std::to_string(n) + " above 65535", at);
+      v = static_cast<double>(n) / 65535.0;
+    }
+    return {c[0], c[1], c[2]};
+  }
+
+  double finite_float(const char* what) {
+    const size_t at = in.offset();
+    const double v = in.float64();
+    if (!std::isfinite(v)) in.fail(std::string(what) + " is not finite", at);
+    return v;
+  }
+
+  Shape shape(const std::string& path) {
+    const size_t start = in.offset();
+    const uint8_t kind_byte = in.byte(Field::structure);
+    const uint8_t kind = kind_byte & ~has_colour_flag;
+    if (kind > 3) in.fail("unknown shape kind " + std::to_string(kind_byte), start);
+    Shape s;
+    s.name = in.text();
+    if (kind_byte & has_colour_flag) s.colour = colour();
+    if (kind == 0) {
+      TrimmedSurface t;
+      t.surface = read_surface(in, q);
+      const size_t e_at = in.offset();
+      const int64_t e = in.varsint(Field::structure);
+      if (e < -100 || e > 100) in.fail("trim grid exponent " + std::to_string(e) + " outside -100..100", e_at);
+      t.loops = read_trim_loops(in, static_cast<int>(e), previous_edge);
+      s.geometry = std::move(t);
+    } else if (kind == 1) {
+      s.geometry = read_curve(in, q);
+    } else if (kind == 2) {
+      s.geometry = read_triangle_mesh(in, q);
+    } else {
+      s.geometry = read_polygon_mesh(in, q);
+    }
+    const std::string entity = path + "/" + (s.name.empty() ? "shape at decoded byte " + std::to_string(start) : s.name);
+    try {
+      // Loops keep whatever closure they had when written; their closure is not this reader's to judge.
+      if (const auto* t = std::get_if<TrimmedSurface>(&s.geometry))
+        validate(*t, entity, std::numeric_limits<double>::infinity());
+      else
+        std::visit([&](const auto& g) { validate(g, entity); }, s.geometry);
+    } catch (const GeometryError& e) {
+      in.fail(std::string("invalid shape: ") + e.what(), start);
+    }
+    return s;
+  }
+
+  SceneNode node(const std::string& parent_path, int depth) {
+    if (depth > deepest_node) in.fail("nodes nested deeper than " + std::to_string(deepest_node));
+    SceneNode n;
+    n.name = in.text();
+    const std::string path = parent_path.empty() ? (n.name.empty() ? "scene" : n.name) : parent_path + "/" + n.name;
+    const size_t flags_at = in.offset();
+    const uint8_t flags = in.byte(Field::structure);
+    if (flags & ~(node_colour_flag | node_linear_flag | node_translation_flag))
+      in.fail("unknown node flags " + std::to_string(flags), flags_at);
+    if (flags & node_colour_flag) n.colour = colour();
+    if (flags & node_linear_flag) {
+      const size_t at = in.offset();
+      for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) n.transform.linear()(r, c) = finite_float("a transform entry");
+      if (!(std::abs(n.transform.linear().determinant()) > 0)) in.fail("a singular transform", at);
+    }
+    if (flags & node_translation_flag)
+      for (int k = 0; k < 3; ++k) n.transform.translation()(k) = finite_float("a translation");
+    const size_t shape_count = in.count(2);
+    n.shapes.reserve(shape_count);
+    for (size_t i = 0; i < shape_count; ++i) n.shapes.push_back(shape(path));
+    const size_t child_count = in.count(3);
+    n.children.reserve(child_count);
+    for (size_t i = 0; i < child_count; ++i) n.children.push_back(node(path, depth + 1));
+    return n;
+  }
+};
+
+}  // namespace
+
+Scene read_cnb(const std::string& bytes, const std::string& name) {
+  OpenedPayload payload = open_payload(bytes, name);
+  ByteReader in(*payload.source, payload.size);
+  try {
+    Scene scene;
+    SceneDecoder decoder{in};
+    scene.unit.name = in.text();
+    scene.unit.millimetres = decoder.finite_float("the unit's size");
+    scene.source_unit.name = in.text();
+    scene.source_unit.millimetres = decoder.finite_float("the source unit's size");
+    decoder.finite_float("the maximum deviation");
+    const size_t q_at = in.offset();
+    decoder.q = in.float64();
+    if (!(decoder.q > 0) || !std::isfinite(decoder.q)) in.fail("the grid step is not positive and finite", q_at);
+    decoder.finite_float("the deviation bound");
+    scene.root = decoder.node("", 0);
+    if (in.left() > 0) in.fail(std::to_string(in.left()) + " bytes after the scene");
+    return scene;
+  } catch (const PayloadError& e) {
+    throw FileError(name + ": decoded byte " + std::to_string(e.offset) + ": " + e.what());
+  }
+}
+
+}  // namespace cadnurbs

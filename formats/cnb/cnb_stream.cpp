@@ -1,0 +1,91 @@
+#include "formats/cnb/cnb_stream.hpp"
+
+#include <bit>
+#include <cstring>
+
+namespace cadnurbs::cnb {
+
+namespace {
+int first_context(Field f) { return 2 * static_cast<int>(f); }
+int continuation_context(Field f) { return 2 * static_cast<int>(f) + 1; }
+int float_context(int byte_index) { return 2 * field_count + byte_index; }
+}  // namespace
+
+void ByteWriter::put(uint8_t value, int context) {
+  bytes_.push_back(static_cast<char>(value));
+  contexts_.push_back(static_cast<uint8_t>(context));
+}
+
+void ByteWriter::byte(uint8_t value, Field field) { put(value, first_context(field)); }
+
+void ByteWriter::varuint(uint64_t value, Field field) {
+  int context = first_context(field);
+  while (value >= 0x80) {
+    put(static_cast<uint8_t>(value | 0x80), context);
+    value >>= 7;
+    context = continuation_context(field);
+  }
+  put(static_cast<uint8_t>(value), context);
+}
+
+void ByteWriter::varsint(int64_t value, Field field) { varuint(zigzag(value), field); }
+
+void ByteWriter::float64(double value) {
+  const uint64_t bits = std::bit_cast<uint64_t>(value);
+  for (int i = 0; i < 8; ++i) put(static_cast<uint8_t>(bits >> (8 * i)), float_context(i));
+}
+
+void ByteWriter::text(const std::string& value) {
+  varuint(value.size(), Field::count);
+  for (char c : value) put(static_cast<uint8_t>(c), first_context(Field::text));
+}
+
+void ByteWriter::append(const ByteWriter& other) {
+  bytes_ += other.bytes_;
+  contexts_.insert(contexts_.end(), other.contexts_.begin(), other.contexts_.end());
+}
+
+uint8_t ByteReader::take(int context) {
+  if (offset_ >= size_) fail("the payload ends inside a value");
+  ++offset_;
+  return source_.next(context);
+}
+
+uint8_t ByteReader::byte(Field field) { return take(first_context(field)); }
+
+uint64_t ByteReader::varuint(Field field) {
+  const size_t start = offset_;
+  uint64_t value = 0;
+  for (int shift = 0;; shift += 7) {
+    const uint8_t b = take(shift == 0 ? first_context(field) : continuation_context(field));
+    if (shift == 63 && b > 1) fail("varint larger than 64 bits", start);
+    value |= static_cast<uint64_t>(b & 0x7F) << shift;
+    if (!(b & 0x80)) return value;
+    if (shift == 63) fail("varint longer than 10 bytes", start);
+  }
+}
+
+int64_t ByteReader::varsint(Field field) { return unzigzag(varuint(field)); }
+
+double ByteReader::float64() {
+  uint64_t bits = 0;
+  for (int i = 0; i < 8; ++i) bits |= static_cast<uint64_t>(take(float_context(i))) << (8 * i);
+  return std::bit_cast<double>(bits);
+}
+
+std::string ByteReader::text() {
+  const size_t n = count(1);
+  std::string s(n, '\0');
+  for (size_t i = 0; i < n; ++i) s[i] = static_cast<char>(take(first_context(Field::text)));
+  return s;
+}
+
+size_t ByteReader::count(size_t min_bytes, Field field) {
+  const size_t start = offset_;
+  const uint64_t n = varuint(field);
+  if (min_bytes > 0 && n > left() / min_bytes)
+    fail("count " + std::to_string(n) + " cannot fit in the " + std::to_string(left()) + " bytes left", start);
+  return static_cast<size_t>(n);
+}
+
+}  // namespace cadnurbs::cnb

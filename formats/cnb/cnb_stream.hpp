@@ -1,0 +1,94 @@
+#pragma once
+// The primitive values of a .cnb payload (docs/cnb.md, "Types"): bytes, LEB128 varints, zig-zag signed
+// varints, little-endian float64 and length-prefixed strings. Every byte carries a context (what kind of
+// field it belongs to) so that a context-modelling entropy coder can keep separate statistics per kind;
+// a plain byte buffer ignores it.
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cadnurbs::cnb {
+
+// What a byte is part of. A varint's first byte and its continuation bytes get different contexts.
+enum class Field : uint8_t { structure, count, text, knot, weight, point, trim, index, raw };
+constexpr int field_count = 9;
+// Contexts: 2 per field (first / continuation byte of a varint) plus 8 for the bytes of a float64.
+constexpr int context_count = 2 * field_count + 8;
+
+// A damaged or impossible payload: where (byte offset in the decoded payload) and why.
+struct PayloadError : std::runtime_error {
+  PayloadError(size_t offset, const std::string& reason)
+      : std::runtime_error(reason), offset(offset) {}
+  size_t offset;
+};
+
+// Builds the decoded payload, remembering each byte's context.
+class ByteWriter {
+ public:
+  void byte(uint8_t value, Field field = Field::structure);
+  void varuint(uint64_t value, Field field);
+  void varsint(int64_t value, Field field);  // zig-zag: 0, -1, 1, -2, ... -> 0, 1, 2, 3, ...
+  void float64(double value);
+  void text(const std::string& value);
+  void append(const ByteWriter& other);
+
+  const std::string& bytes() const { return bytes_; }
+  const std::vector<uint8_t>& contexts() const { return contexts_; }
+
+ private:
+  void put(uint8_t value, int context);
+  std::string bytes_;
+  std::vector<uint8_t> contexts_;
+};
+
+// Where a reader takes its bytes from: a buffer, or an entropy decoder that needs the context.
+class ByteSource {
+ public:
+  virtual ~ByteSource() = default;
+  virtual uint8_t next(int context) = 0;
+};
+
+// Reads the payload back. Every read past `size` bytes, every count that cannot fit in the bytes left,
+// and every over-long varint throws PayloadError with the offset of the offending value.
+class ByteReader {
+ public:
+  ByteReader(ByteSource& source, size_t size) : source_(source), size_(size) {}
+
+  uint8_t byte(Field field = Field::structure);
+  uint64_t varuint(Field field);
+  int64_t varsint(Field field);
+  double float64();
+  std::string text();
+  // A count of things that each take at least `min_bytes` bytes: refused (before anything is allocated)
+  // when the bytes left cannot hold that many.
+  size_t count(size_t min_bytes = 1, Field field = Field::count);
+
+  size_t offset() const { return offset_; }
+  size_t left() const { return size_ - offset_; }
+  [[noreturn]] void fail(const std::string& reason, size_t at) const { throw PayloadError(at, reason); }
+  [[noreturn]] void fail(const std::string& reason) const { throw PayloadError(offset_, reason); }
+
+ private:
+  uint8_t take(int context);
+  ByteSource& source_;
+  size_t size_;
+  size_t offset_ = 0;
+};
+
+// A source over bytes already in memory.
+class BufferSource : public ByteSource {
+ public:
+  explicit BufferSource(const std::string& bytes) : bytes_(bytes) {}
+  uint8_t next(int) override { return static_cast<uint8_t>(bytes_[position_++]); }
+
+ private:
+  const std::string& bytes_;
+  size_t position_ = 0;
+};
+
+inline uint64_t zigzag(int64_t v) { return (static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63); }
+inline int64_t unzigzag(uint64_t u) { return static_cast<int64_t>(u >> 1) ^ -static_cast<int64_t>(u & 1); }
+
+}  // namespace cadnurbs::cnb

@@ -1,0 +1,158 @@
+// .cnb round trips: the bundled capping samples (compact .x3dv) and a corpus STEP part, at D = 1 mm and
+// 0.01 mm: same counts, same shared-edge numbers, measured deviation within D and within the writer's
+// bound; the steps are the coarsest the bound allows; sizes against the .x3dv and its gzip.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "analysis/paired_scene_deviation.hpp"
+#include "core/nurbs_surface.hpp"
+#include "formats/cnb/cnb_quantisation.hpp"
+#include "formats/cnb/cnb_reader.hpp"
+#include "formats/cnb/cnb_writer.hpp"
+#include "formats/common/file_io.hpp"
+#include "formats/common/gzip.hpp"
+#include "formats/step/step_reader.hpp"
+#include "formats/vrml/vrml_reader.hpp"
+
+namespace cadnurbs {
+namespace {
+
+std::string sample_path(const std::string& name) { return std::string(CADNURBS_SOURCE_DIR) + "/samples/" + name; }
+const std::string corpus_part = std::string(CADNURBS_SHARED_DIR) + "/corpus/step/dm1-id-214.stp";
+
+const Scene& corpus_scene() {
+  static const Scene scene = read_step(corpus_part).scene;
+  return scene;
+}
+
+void expect_same_counts(const Scene& a, const Scene& b) {
+  const SceneCounts x = count_entities(a), y = count_entities(b);
+  EXPECT_EQ(x.surfaces, y.surfaces);
+  EXPECT_EQ(x.trimmed_surfaces, y.trimmed_surfaces);
+  EXPECT_EQ(x.curves, y.curves);
+  EXPECT_EQ(x.meshes, y.meshes);
+  EXPECT_EQ(x.control_points, y.control_points);
+  EXPECT_EQ(x.knots, y.knots);
+  EXPECT_EQ(x.trim_loops, y.trim_loops);
+  EXPECT_EQ(x.trim_control_points, y.trim_control_points);
+  EXPECT_EQ(x.trim_knots, y.trim_knots);
+  EXPECT_EQ(x.polygon_meshes, y.polygon_meshes);
+  EXPECT_EQ(x.polygons, y.polygons);
+  EXPECT_EQ(x.mesh_triangles, y.mesh_triangles);
+}
+
+// Every loop's shared-edge numbers, in scene order.
+std::vector<TrimEdgeRef> edge_refs(const Scene& scene) {
+  std::vector<TrimEdgeRef> refs;
+  for_each_shape(scene, [&](const Shape& s, const Eigen::Affine3d&, const Colour&) {
+    if (const auto* t = std::get_if<TrimmedSurface>(&s.geometry))
+      for (const auto& loop : t->loops) refs.insert(refs.end(), loop.edges.begin(), loop.edges.end());
+  });
+  return refs;
+}
+
+struct RoundTrip {
+  std::string bytes;
+  Scene decoded;
+  CnbWriteReport report;
+  PairedDeviation measured;
+};
+
+RoundTrip round_trip(const Scene& scene, double deviation, CnbOptions::Coder coder = CnbOptions::Coder::smallest) {
+  RoundTrip r;
+  CnbOptions options;
+  options.max_deviation = deviation;
+  options.coder = coder;
+  r.bytes = write_cnb(scene, options, &r.report);
+  r.decoded = read_cnb(r.bytes, "part.cnb");
+  r.measured = paired_scene_deviation(scene, r.decoded);
+  return r;
+}
+
+void expect_round_trip(const Scene& scene, double deviation, const std::string& what) {
+  SCOPED_TRACE(what + " at D = " + std::to_string(deviation));
+  const RoundTrip r = round_trip(scene, deviation);
+  expect_same_counts(scene, r.decoded);
+  EXPECT_EQ(edge_refs(scene), edge_refs(r.decoded));
+  EXPECT_EQ(r.decoded.unit.name, scene.unit.name);
+  EXPECT_GT(r.measured.samples, 300);
+  EXPECT_LE(r.measured.max(), r.report.deviation_bound());
+  EXPECT_LE(r.report.deviation_bound(), deviation);
+  // The quantisation is not idle: the measured move is a fair part of the bound.
+  EXPECT_GT(r.measured.max(), 0.05 * deviation);
+  std::cout << what << " D=" << deviation << ": " << r.bytes.size() << " bytes (payload " << r.report.payload_bytes
+            << ", deflate " << r.report.deflate_bytes << ", arithmetic " << r.report.arithmetic_bytes
+            << "); measured surfaces " << r.measured.surfaces << ", boundaries " << r.measured.boundaries
+            << ", meshes " << r.measured.meshes << "; bound " << r.report.deviation_bound() << "\n";
+}
+
+class CappingSample : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CappingSample, RoundTripWithinDeviation) {
+  const Scene scene = read_vrml(sample_path(GetParam() + ".x3dv"));
+  for (double d : {1.0, 0.01}) expect_round_trip(scene, d, GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(Samples, CappingSample, ::testing::Values("capping-90", "capping-end", "capping-post"));
+
+TEST(CnbCorpus, StepPartRoundTripWithinDeviation) {
+  const Scene& scene = corpus_scene();
+  ASSERT_GT(count_entities(scene).surfaces, 10);
+  for (double d : {1.0, 0.01}) expect_round_trip(scene, d, "dm1-id-214.stp");
+}
+
+TEST(CnbCorpus, BothEntropyCodersDecodeToTheSameScene) {
+  const Scene& scene = corpus_scene();
+  const RoundTrip a = round_trip(scene, 0.01, CnbOptions::Coder::deflate);
+  const RoundTrip b = round_trip(scene, 0.01, CnbOptions::Coder::arithmetic);
+  EXPECT_NE(a.bytes, b.bytes);
+  EXPECT_EQ(paired_scene_deviation(a.decoded, b.decoded).max(), 0.0);
+  EXPECT_EQ(a.measured.max(), b.measured.max());
+}
+
+// Doubling any step would let the bound exceed its share of D: the steps are the coarsest.
+TEST(CnbSteps, CoarsestTheBoundAllows) {
+  const Scene& scene = corpus_scene();
+  for (double d : {1.0, 0.01}) {
+    CnbOptions options;
+    options.max_deviation = d;
+    const double q = cnb::point_step(scene, options);
+    const double scale = cnb::largest_world_scale(scene);
+    EXPECT_NEAR(q * std::sqrt(3.0) / 2.0 * scale, (1 - options.trim_share) * d, 1e-12 * d);
+    EXPECT_GT(2 * q * std::sqrt(3.0) / 2.0 * scale, (1 - options.trim_share) * d);
+    int faces = 0;
+    for_each_shape(scene, [&](const Shape& s, const Eigen::Affine3d& world, const Colour&) {
+      const auto* t = std::get_if<TrimmedSurface>(&s.geometry);
+      if (!t || surface_derivative_bound(t->surface) == 0) return;
+      const double face_scale = cnb::transform_scale(world);
+      const int e = cnb::trim_step_exponent(t->surface, options, face_scale);
+      EXPECT_LE(cnb::trim_bound(t->surface, e, face_scale), options.trim_share * d);
+      EXPECT_GT(cnb::trim_bound(t->surface, e + 1, face_scale), options.trim_share * d);
+      ++faces;
+    });
+    EXPECT_GT(faces, 10);
+  }
+}
+
+// A scaled node: the grid shrinks with the scale so that the world deviation stays within D.
+TEST(CnbSteps, ScaledNodesKeepTheWorldDeviation) {
+  Scene scene = read_vrml(sample_path("capping-90.x3dv"));
+  scene.root.transform = Eigen::Affine3d(Eigen::Scaling(3.0));
+  const RoundTrip r = round_trip(scene, 1.0);
+  EXPECT_LE(r.measured.max(), 1.0);
+  EXPECT_GT(r.measured.max(), 0.05);
+}
+
+TEST(CnbSizes, Capping90SmallerThanGzippedX3dv) {
+  const std::string x3dv = read_file(sample_path("capping-90.x3dv"));
+  const size_t gzipped = gzip(x3dv).size();
+  const RoundTrip r = round_trip(read_vrml(sample_path("capping-90.x3dv")), 1.0);
+  std::cout << "capping-90 at 1 mm: .cnb " << r.bytes.size() << " bytes; .x3dv " << x3dv.size() << ", gzip'd "
+            << gzipped << "\n";
+  EXPECT_LT(r.bytes.size(), gzipped);
+}
+
+}  // namespace
+}  // namespace cadnurbs
