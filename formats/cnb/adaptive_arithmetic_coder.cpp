@@ -1,30 +1,34 @@
 #include "formats/cnb/adaptive_arithmetic_coder.hpp"
 
+#include <algorithm>
+
 namespace cadnurbs::cnb {
 
 namespace {
 
 constexpr int probability_bits = 12;
 constexpr uint16_t one = 1u << probability_bits;
-constexpr int adaptation_shift = 4;
+// A probability moves 1/(n+2) of the way towards each bit it sees, n the bits seen so far, until that
+// is 1/slowest: fast learning from few bits (files are small), then a stable estimate.
+constexpr int slowest = 24;
 constexpr uint32_t top = 1u << 24;
 // Probabilities stay within [min, one - min] so that no decision is ever free.
 constexpr uint16_t min_probability = 64;
 
-void adapt(uint16_t& p, bool bit) {
-  if (bit) p -= p >> adaptation_shift;
-  else p += (one - p) >> adaptation_shift;
-  if (p < min_probability) p = min_probability;
-  if (p > one - min_probability) p = one - min_probability;
+void adapt(BitModel& m, bool bit) {
+  const int target = bit ? 0 : one;  // p is the probability of a 0
+  int p = m.p + (target - m.p) / (m.seen + 2);
+  if (m.seen + 2 < slowest) ++m.seen;
+  m.p = static_cast<uint16_t>(std::clamp<int>(p, min_probability, one - min_probability));
 }
 
 class Encoder {
  public:
-  void bit(uint16_t& p, bool b) {
-    const uint32_t bound = (range_ >> probability_bits) * p;
+  void bit(BitModel& m, bool b) {
+    const uint32_t bound = (range_ >> probability_bits) * m.p;
     if (!b) range_ = bound;
     else { low_ += bound; range_ -= bound; }
-    adapt(p, b);
+    adapt(m, b);
     while (range_ < top) { range_ <<= 8; shift_low(); }
   }
   std::string finish() {
@@ -57,10 +61,10 @@ class Encoder {
 }  // namespace
 
 std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_t>& contexts) {
-  std::vector<uint16_t> probabilities(static_cast<size_t>(context_count) * 256, one / 2);
+  std::vector<BitModel> probabilities(static_cast<size_t>(context_count) * 256);
   Encoder encoder;
   for (size_t i = 0; i < bytes.size(); ++i) {
-    uint16_t* tree = &probabilities[static_cast<size_t>(contexts[i]) * 256];
+    BitModel* tree = &probabilities[static_cast<size_t>(contexts[i]) * 256];
     const uint8_t value = static_cast<uint8_t>(bytes[i]);
     unsigned node = 1;
     for (int b = 7; b >= 0; --b) {
@@ -73,24 +77,24 @@ std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_
 }
 
 ArithmeticDecoder::ArithmeticDecoder(const char* coded, size_t size)
-    : coded_(coded), size_(size), probabilities_(static_cast<size_t>(context_count) * 256, one / 2) {
+    : coded_(coded), size_(size), probabilities_(static_cast<size_t>(context_count) * 256) {
   for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | input();
 }
 
 uint8_t ArithmeticDecoder::input() { return position_ < size_ ? static_cast<uint8_t>(coded_[position_++]) : 0; }
 
-bool ArithmeticDecoder::bit(uint16_t& p) {
-  const uint32_t bound = (range_ >> probability_bits) * p;
+bool ArithmeticDecoder::bit(BitModel& m) {
+  const uint32_t bound = (range_ >> probability_bits) * m.p;
   bool b;
   if (code_ < bound) { range_ = bound; b = false; }
   else { code_ -= bound; range_ -= bound; b = true; }
-  adapt(p, b);
+  adapt(m, b);
   while (range_ < top) { range_ <<= 8; code_ = (code_ << 8) | input(); }
   return b;
 }
 
 uint8_t ArithmeticDecoder::next(int context) {
-  uint16_t* tree = &probabilities_[static_cast<size_t>(context) * 256];
+  BitModel* tree = &probabilities_[static_cast<size_t>(context) * 256];
   unsigned node = 1;
   for (int b = 0; b < 8; ++b) node = 2 * node + (bit(tree[node]) ? 1 : 0);
   return static_cast<uint8_t>(node - 256);

@@ -1,7 +1,7 @@
 #pragma once
 // An adaptive binary arithmetic (range) coder for bytes with contexts: each byte is coded as 8 binary
 // decisions down a bit tree, each decision with its own probability per context, adapted after every
-// decision (12-bit probabilities, moving 1/16 of the way, never nearer to 0 or 1 than 64/4096). The decoder needs the same context sequence,
+// decision (12-bit probabilities, moving 1/(n+2) of the way after n bits, at least 1/24, never nearer to 0 or 1 than 64/4096). The decoder needs the same context sequence,
 // which the .cnb reader supplies as it parses. Ours; the carry handling is the classic one of range coders
 // (a cached byte plus a count of pending 0xFF bytes).
 #include <cstdint>
@@ -17,6 +17,12 @@ std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_
 
 // Decodes lazily. Past the end of the coded bytes it reads zeros: the caller bounds how many bytes it
 // asks for (the payload size in the header), and the checksum has vouched for the coded bytes.
+// One binary decision's model: the probability of a 0 (of 4096) and how many bits it has seen.
+struct BitModel {
+  uint16_t p = 2048;
+  uint8_t seen = 0;
+};
+
 class ArithmeticDecoder : public ByteSource {
  public:
   ArithmeticDecoder(const char* coded, size_t size);
@@ -24,11 +30,11 @@ class ArithmeticDecoder : public ByteSource {
 
  private:
   uint8_t input();
-  bool bit(uint16_t& probability);
+  bool bit(BitModel& model);
   const char* coded_;
   size_t size_, position_ = 0;
   uint32_t range_ = 0xFFFFFFFFu, code_ = 0;
-  std::vector<uint16_t> probabilities_;
+  std::vector<BitModel> probabilities_;
 };
 
 // How many decoded bytes one coded byte can at most stand for (probabilities are kept within

@@ -5,26 +5,33 @@
 #include "core/polygon_mesh.hpp"
 #include "core/triangle_mesh.hpp"
 #include "core/trimmed_surface.hpp"
+#include "formats/cnb/cnb_numbers.hpp"
 #include "formats/cnb/cnb_stream.hpp"
 
 namespace cadnurbs::cnb {
 
+// What coding a record depends on besides the record: the previous segment's edge number (scene-wide)
+// and the raw knot vectors met so far. Writer and reader keep one each, updated in the same order.
+struct CodingState {
+  int previous_edge = -1;
+  KnotCache knots;
+};
+
 // A surface's net on the grid of step q, predicted along rows (each point from the one before it, u
 // fastest) or across the net (parallelogram: P[i-1,j] + P[i,j-1] - P[i-1,j-1]), whichever leaves the
 // smaller residuals. Returns true when the parallelogram was taken.
-bool write_surface(ByteWriter& out, const NurbsSurface& surface, double q);
-NurbsSurface read_surface(ByteReader& in, double q);
+bool write_surface(ByteWriter& out, const NurbsSurface& surface, double q, CodingState& state);
+NurbsSurface read_surface(ByteReader& in, double q, CodingState& state);
 
 // Trimming loops on the grid 2^exponent in (u,v), predicted from the previous point along the loop; a
 // segment's first point snapped onto the previous segment's last where they were within half a step
-// (so closed loops stay closed). Edge numbers as differences from the previous segment's, scene-wide
-// (`previous_edge` carries it from face to face).
-void write_trim_loops(ByteWriter& out, const std::vector<TrimLoop>& loops, int exponent, int& previous_edge);
-std::vector<TrimLoop> read_trim_loops(ByteReader& in, int exponent, int& previous_edge);
+// (so closed loops stay closed). Edge numbers as differences from the previous segment's, scene-wide.
+void write_trim_loops(ByteWriter& out, const std::vector<TrimLoop>& loops, int exponent, CodingState& state);
+std::vector<TrimLoop> read_trim_loops(ByteReader& in, int exponent, CodingState& state);
 
 // A 3D curve: order, knots, weights and points predicted from the previous point on the grid q.
-void write_curve(ByteWriter& out, const NurbsCurve& curve, double q);
-NurbsCurve read_curve(ByteReader& in, double q);
+void write_curve(ByteWriter& out, const NurbsCurve& curve, double q, CodingState& state);
+NurbsCurve read_curve(ByteReader& in, double q, CodingState& state);
 
 // Meshes: vertices predicted from the previous vertex on the grid q; indices as differences from the
 // previous index; normals (triangle meshes) to 1/32767 per component.

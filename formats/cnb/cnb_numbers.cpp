@@ -1,5 +1,6 @@
 #include "formats/cnb/cnb_numbers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -16,7 +17,7 @@ int64_t on_grid(double x, double step) {
 
 namespace {
 
-enum KnotMode : uint8_t { whole = 0, decimal = 1, raw = 2 };
+enum KnotMode : uint8_t { whole = 0, decimal = 1, raw = 2, cached = 3 };
 
 // The values as integers n_i with n_i / 10^k == value bitwise, for the smallest k in 0..17 that works.
 bool as_decimals(const std::vector<double>& values, int& k, std::vector<int64_t>& n) {
@@ -36,7 +37,14 @@ bool as_decimals(const std::vector<double>& values, int& k, std::vector<int64_t>
 
 }  // namespace
 
-void write_knots(ByteWriter& out, const std::vector<double>& knots) {
+void KnotCache::use(size_t index) { std::rotate(recent.begin(), recent.begin() + index, recent.begin() + index + 1); }
+
+void KnotCache::add(const std::vector<double>& values) {
+  recent.insert(recent.begin(), values);
+  if (recent.size() > capacity) recent.pop_back();
+}
+
+void write_knots(ByteWriter& out, const std::vector<double>& knots, KnotCache& cache) {
   std::vector<double> values;
   std::vector<uint64_t> multiplicity;
   for (double t : knots) {
@@ -51,14 +59,20 @@ void write_knots(ByteWriter& out, const std::vector<double>& knots) {
     else { out.byte(decimal, Field::knot); out.byte(static_cast<uint8_t>(k), Field::knot); }
     out.varsint(n[0], Field::knot);
     for (size_t i = 1; i < n.size(); ++i) out.varuint(static_cast<uint64_t>(n[i] - n[i - 1] - 1), Field::knot);
+  } else if (const auto hit = std::find(cache.recent.begin(), cache.recent.end(), values); hit != cache.recent.end()) {
+    out.byte(cached, Field::knot);
+    const size_t index = static_cast<size_t>(hit - cache.recent.begin());
+    out.varuint(index, Field::knot);
+    cache.use(index);
   } else {
     out.byte(raw, Field::knot);
     for (double v : values) out.float64(v);
+    cache.add(values);
   }
   for (uint64_t m : multiplicity) out.varuint(m - 1, Field::count);
 }
 
-std::vector<double> read_knots(ByteReader& in, size_t expected_count) {
+std::vector<double> read_knots(ByteReader& in, size_t expected_count, KnotCache& cache) {
   const size_t start = in.offset();
   const size_t m = in.count(2);
   if (m == 0 || m > expected_count) in.fail(std::to_string(m) + " distinct knots for a vector of " + std::to_string(expected_count), start);
@@ -92,6 +106,14 @@ std::vector<double> read_knots(ByteReader& in, size_t expected_count) {
       if (!std::isfinite(values.back()) || (i > 0 && !(values[i] > values[i - 1])))
         in.fail("knot " + std::to_string(values.back()) + " is not finite or not above the previous one", at);
     }
+    cache.add(values);
+  } else if (mode == cached) {
+    const size_t at = in.offset();
+    const uint64_t index = in.varuint(Field::knot);
+    if (index >= cache.recent.size() || cache.recent[index].size() != m)
+      in.fail("no earlier knot vector of " + std::to_string(m) + " values at cache place " + std::to_string(index), at);
+    values = cache.recent[index];
+    cache.use(index);
   } else {
     in.fail("unknown knot mode " + std::to_string(mode), mode_at);
   }

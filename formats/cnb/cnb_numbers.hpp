@@ -13,12 +13,21 @@ namespace cadnurbs::cnb {
 // fine for the coordinate: a maximum deviation too small for the model's size) or x is not finite.
 int64_t on_grid(double x, double step);
 
+// The distinct values of the raw (mode 2) knot vectors met so far in a file, most recent first: a vector
+// met again (the two pcurves of an edge, the u knots of neighbouring faces) is coded by its place here.
+struct KnotCache {
+  static constexpr size_t capacity = 64;
+  std::vector<std::vector<double>> recent;
+  void use(size_t index);                      // moves entry `index` to the front
+  void add(const std::vector<double>& values);  // at the front, dropping the oldest beyond capacity
+};
+
 // Distinct values and multiplicities; values as whole numbers, as decimals n / 10^k that give back the
-// same float64, or as raw float64.
-void write_knots(ByteWriter& out, const std::vector<double>& knots);
+// same float64, as the place of the same values in the cache, or as raw float64.
+void write_knots(ByteWriter& out, const std::vector<double>& knots, KnotCache& cache);
 // Refuses (PayloadError) a vector whose multiplicities do not add up to `expected_count`, before
-// allocating it, and values that are not increasing.
-std::vector<double> read_knots(ByteReader& in, size_t expected_count);
+// allocating it, values that are not increasing, and a cache place that holds no such vector.
+std::vector<double> read_knots(ByteReader& in, size_t expected_count, KnotCache& cache);
 
 // Mode 0 (polynomial) or 1 (table of distinct float64 values; an index per point when there are two or
 // more).

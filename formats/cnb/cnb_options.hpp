@@ -8,7 +8,7 @@ struct CnbOptions {
   double max_deviation = 1.0;
   // The part of D that trimming curves may use (their quantisation in (u,v)); control points and mesh
   // vertices get the rest. In (0, 1).
-  double trim_share = 0.25;
+  double trim_share = 0.4;
   // The entropy stage: the smaller of deflate and the adaptive arithmetic coder, or one of them.
   enum class Coder { smallest, deflate, arithmetic } coder = Coder::smallest;
 };
@@ -24,6 +24,10 @@ struct CnbWriteReport {
   size_t arithmetic_bytes = 0;  // the payload arithmetic-coded (0 when not tried)
   size_t file_bytes = 0;
   int parallelogram_nets = 0, row_nets = 0;  // which predictor each surface's net took
+  // Decoded payload bytes by what they hold: control point and vertex residuals, trim point residuals,
+  // knots, weights (tables and indices), float64 values (transforms, header, raw knots, weight tables),
+  // and the rest (structure, counts, names, indices).
+  size_t point_bytes = 0, trim_bytes = 0, knot_bytes = 0, weight_bytes = 0, float_bytes = 0, other_bytes = 0;
 };
 
 }  // namespace cadnurbs

@@ -18,7 +18,31 @@ using namespace cnb;
 struct SceneDecoder {
   ByteReader& in;
   double q = 0;
-  int previous_edge = -1;
+  CodingState state;
+
+  // Refuses a scene whose numbers exceed the budget the payload's size allows.
+  void count_numbers(const Geometry& g, size_t at) {
+    size_t n = 0;
+    if (const auto* t = std::get_if<TrimmedSurface>(&g)) {
+      n = 4 * t->surface.points.size() + t->surface.u_knots.size() + t->surface.v_knots.size();
+      for (const auto& loop : t->loops)
+        for (const auto& segment : loop.segments)
+          n += std::holds_alternative<NurbsCurve>(segment) ? 4 * std::get<NurbsCurve>(segment).points.size()
+                                                           : 2 * std::get<Polyline2D>(segment).points.size();
+    } else if (const auto* c = std::get_if<NurbsCurve>(&g)) {
+      n = 4 * c->points.size() + c->knots.size();
+    } else if (const auto* m = std::get_if<TriangleMesh>(&g)) {
+      n = 3 * m->positions.size() + 3 * m->triangles.size() + 3 * m->corner_normals.size();
+    } else {
+      const auto& p = std::get<PolygonMesh>(g);
+      n = 3 * p.positions.size() + p.polygons.size();
+      for (const auto& polygon : p.polygons) n += polygon.size();
+    }
+    numbers += n;
+    if (numbers > number_budget)
+      in.fail("the scene would hold more than " + std::to_string(number_budget) + " numbers (" +
+                  std::to_string(numbers_per_payload_byte) + " per payload byte and " + std::to_string(numbers_allowance) + ")", at);
+  }
 
   Colour colour() {
     double c[3];
@@ -38,24 +62,37 @@ struct SceneDecoder {
     return v;
   }
 
+  std::vector<Geometry> geometries;  // of every shape so far, for repeated ones
+  size_t numbers = 0, number_budget = 0;
+
   Shape shape(const std::string& path) {
     const size_t start = in.offset();
     const uint8_t kind_byte = in.byte(Field::structure);
     const uint8_t kind = kind_byte & ~has_colour_flag;
-    if (kind > 3) in.fail("unknown shape kind " + std::to_string(kind_byte), start);
+    if (kind > repeated_shape_kind) in.fail("unknown shape kind " + std::to_string(kind_byte), start);
     Shape s;
     s.name = in.text();
     if (kind_byte & has_colour_flag) s.colour = colour();
+    if (kind == repeated_shape_kind) {
+      const size_t at = in.offset();
+      const uint64_t back = in.varuint(Field::index);
+      if (back >= geometries.size())
+        in.fail("a repeat of shape " + std::to_string(back + 1) + " back, with " + std::to_string(geometries.size()) + " before it", at);
+      s.geometry = geometries[geometries.size() - 1 - back];
+      count_numbers(s.geometry, at);
+      geometries.push_back(s.geometry);
+      return s;
+    }
     if (kind == 0) {
       TrimmedSurface t;
-      t.surface = read_surface(in, q);
+      t.surface = read_surface(in, q, state);
       const size_t e_at = in.offset();
       const int64_t e = in.varsint(Field::structure);
       if (e < -100 || e > 100) in.fail("trim grid exponent " + std::to_string(e) + " outside -100..100", e_at);
-      t.loops = read_trim_loops(in, static_cast<int>(e), previous_edge);
+      t.loops = read_trim_loops(in, static_cast<int>(e), state);
       s.geometry = std::move(t);
     } else if (kind == 1) {
-      s.geometry = read_curve(in, q);
+      s.geometry = read_curve(in, q, state);
     } else if (kind == 2) {
       s.geometry = read_triangle_mesh(in, q);
     } else {
@@ -71,6 +108,8 @@ struct SceneDecoder {
     } catch (const GeometryError& e) {
       in.fail(std::string("invalid shape: ") + e.what(), start);
     }
+    count_numbers(s.geometry, start);
+    geometries.push_back(s.geometry);
     return s;
   }
 
@@ -109,7 +148,7 @@ Scene read_cnb(const std::string& bytes, const std::string& name) {
   ByteReader in(*payload.source, payload.size);
   try {
     Scene scene;
-    SceneDecoder decoder{in};
+    SceneDecoder decoder{in, 0, {}, {}, 0, numbers_per_payload_byte * payload.size + numbers_allowance};
     scene.unit.name = in.text();
     scene.unit.millimetres = decoder.finite_float("the unit's size");
     scene.source_unit.name = in.text();

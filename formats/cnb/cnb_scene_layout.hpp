@@ -7,8 +7,15 @@ namespace cadnurbs::cnb {
 // Node flags.
 constexpr uint8_t node_colour_flag = 1, node_linear_flag = 2, node_translation_flag = 4;
 // Shape kind byte: the geometry's kind (0 trimmed surface, 1 3D curve, 2 triangle mesh, 3 polygon mesh,
-// the order of core::Geometry) in the low bits, this bit when the shape has its own colour.
+// the order of core::Geometry; 4: the same geometry as an earlier shape) in the low bits, this bit when
+// the shape has its own colour.
+constexpr uint8_t repeated_shape_kind = 4;
 constexpr uint8_t has_colour_flag = 0x10;
+// Repeated shapes make the decoded scene larger than its payload: it may hold at most this many numbers
+// (coordinates, knots, weights, indices) per payload byte, plus a fixed allowance, so that a small file
+// cannot claim a huge scene. (A part placed a thousand times costs about ten bytes a copy: far within.)
+constexpr size_t numbers_per_payload_byte = 256;
+constexpr size_t numbers_allowance = size_t(1) << 20;
 // Deeper node trees are refused (a crafted file must not exhaust the reader's stack).
 constexpr int deepest_node = 1000;
 

@@ -73,13 +73,13 @@ Cell read_residual_added(ByteReader& in, const Cell& prediction) {
 
 }  // namespace
 
-bool write_surface(ByteWriter& out, const NurbsSurface& s, double q) {
+bool write_surface(ByteWriter& out, const NurbsSurface& s, double q, CodingState& state) {
   out.varuint(s.u_order, Field::count);
   out.varuint(s.v_order, Field::count);
   out.varuint(s.u_count, Field::count);
   out.varuint(s.v_count, Field::count);
-  write_knots(out, s.u_knots);
-  write_knots(out, s.v_knots);
+  write_knots(out, s.u_knots, state.knots);
+  write_knots(out, s.v_knots, state.knots);
   write_weights(out, s.weights);
   std::vector<Cell> net;
   net.reserve(s.points.size());
@@ -97,7 +97,7 @@ bool write_surface(ByteWriter& out, const NurbsSurface& s, double q) {
   return predictor == parallelogram;
 }
 
-NurbsSurface read_surface(ByteReader& in, double q) {
+NurbsSurface read_surface(ByteReader& in, double q, CodingState& state) {
   NurbsSurface s;
   s.u_order = static_cast<int>(read_order(in));
   s.v_order = static_cast<int>(read_order(in));
@@ -110,8 +110,8 @@ NurbsSurface read_surface(ByteReader& in, double q) {
             counts_at);
   s.u_count = static_cast<int>(u_count);
   s.v_count = static_cast<int>(v_count);
-  s.u_knots = read_knots(in, u_count + s.u_order);
-  s.v_knots = read_knots(in, v_count + s.v_order);
+  s.u_knots = read_knots(in, u_count + s.u_order, state.knots);
+  s.v_knots = read_knots(in, v_count + s.v_order, state.knots);
   const size_t n = u_count * v_count;
   s.weights = read_weights(in, n);
   const size_t predictor_at = in.offset();
@@ -127,10 +127,10 @@ NurbsSurface read_surface(ByteReader& in, double q) {
   return s;
 }
 
-void write_curve(ByteWriter& out, const NurbsCurve& curve, double q) {
+void write_curve(ByteWriter& out, const NurbsCurve& curve, double q, CodingState& state) {
   out.varuint(curve.order, Field::count);
   out.varuint(curve.points.size(), Field::count);
-  write_knots(out, curve.knots);
+  write_knots(out, curve.knots, state.knots);
   write_weights(out, curve.weights);
   Cell previous{0, 0, 0};
   for (const auto& p : curve.points) {
@@ -140,12 +140,12 @@ void write_curve(ByteWriter& out, const NurbsCurve& curve, double q) {
   }
 }
 
-NurbsCurve read_curve(ByteReader& in, double q) {
+NurbsCurve read_curve(ByteReader& in, double q, CodingState& state) {
   NurbsCurve curve;
   curve.dimension = 3;
   curve.order = static_cast<int>(read_order(in));
   const uint64_t n = read_point_count(in, 3);
-  curve.knots = read_knots(in, n + curve.order);
+  curve.knots = read_knots(in, n + curve.order, state.knots);
   curve.weights = read_weights(in, n);
   if (n > in.left() / 3) in.fail(std::to_string(n) + " control points cannot fit in the " + std::to_string(in.left()) + " bytes left");
   Cell previous{0, 0, 0};

@@ -67,7 +67,8 @@ std::vector<Eigen::Vector2d> read_cells(ByteReader& in, size_t n, double step, C
 
 }  // namespace
 
-void write_trim_loops(ByteWriter& out, const std::vector<TrimLoop>& loops, int exponent, int& previous_edge) {
+void write_trim_loops(ByteWriter& out, const std::vector<TrimLoop>& loops, int exponent, CodingState& state) {
+  int& previous_edge = state.previous_edge;
   const double step = std::ldexp(1.0, exponent);
   out.varuint(loops.size(), Field::count);
   Cell2 previous{0, 0};
@@ -88,7 +89,7 @@ void write_trim_loops(ByteWriter& out, const std::vector<TrimLoop>& loops, int e
       if (curve) {
         out.varuint(curve->order, Field::count);
         out.varuint(curve->points.size(), Field::count);
-        write_knots(out, curve->knots);
+        write_knots(out, curve->knots, state.knots);
         write_weights(out, curve->weights);
       } else {
         out.varuint(cells[s].size(), Field::count);
@@ -98,7 +99,8 @@ void write_trim_loops(ByteWriter& out, const std::vector<TrimLoop>& loops, int e
   }
 }
 
-std::vector<TrimLoop> read_trim_loops(ByteReader& in, int exponent, int& previous_edge) {
+std::vector<TrimLoop> read_trim_loops(ByteReader& in, int exponent, CodingState& state) {
+  int& previous_edge = state.previous_edge;
   const double step = std::ldexp(1.0, exponent);
   const size_t loop_count = in.count(3);
   std::vector<TrimLoop> loops(loop_count);
@@ -133,7 +135,7 @@ std::vector<TrimLoop> read_trim_loops(ByteReader& in, int exponent, int& previou
         const size_t n_at = in.offset();
         const size_t n = in.count(2);
         if (n < 1) in.fail("a trimming curve without control points", n_at);
-        c.knots = read_knots(in, n + order);
+        c.knots = read_knots(in, n + order, state.knots);
         c.weights = read_weights(in, n);
         for (const auto& p : read_cells(in, n, step, previous)) c.points.emplace_back(p.x(), p.y(), 0.0);
         loop.segments.emplace_back(std::move(c));

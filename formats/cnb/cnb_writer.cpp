@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "formats/cnb/cnb_container.hpp"
 #include "formats/cnb/cnb_geometry.hpp"
@@ -19,31 +20,47 @@ struct SceneEncoder {
   const CnbOptions& options;
   double q;
   CnbWriteReport& report;
-  int previous_edge = -1;
+  CodingState state;
 
   void colour(const Colour& c) {
     for (double v : {c.r, c.g, c.b}) out.varuint(static_cast<uint64_t>(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0)), Field::raw);
   }
 
+  // Canonical bytes of each geometry written so far (coded from a fresh state, so equal geometry gives
+  // equal bytes wherever it stands) -> its shape number.
+  std::unordered_map<std::string, size_t> written;
+  size_t shape_count = 0;
+
+  // The geometry record; with `counted`, the predictor choice goes into the report.
+  void geometry(ByteWriter& w, const Geometry& g, double world_scale, CodingState& st, bool counted) {
+    if (const auto* t = std::get_if<TrimmedSurface>(&g)) {
+      const bool parallelogram = write_surface(w, t->surface, q, st);
+      if (counted) ++(parallelogram ? report.parallelogram_nets : report.row_nets);
+      const int e = trim_step_exponent(t->surface, options, world_scale);
+      w.varsint(e, Field::structure);
+      write_trim_loops(w, t->loops, e, st);
+      if (!t->loops.empty()) report.trim_bound = std::max(report.trim_bound, trim_bound(t->surface, e, world_scale));
+    } else if (const auto* c = std::get_if<NurbsCurve>(&g)) {
+      write_curve(w, *c, q, st);
+    } else if (const auto* m = std::get_if<TriangleMesh>(&g)) {
+      write_triangle_mesh(w, *m, q);
+    } else {
+      write_polygon_mesh(w, std::get<PolygonMesh>(g), q);
+    }
+  }
+
   void shape(const Shape& s, double world_scale) {
-    const uint8_t kind = static_cast<uint8_t>(s.geometry.index());
+    ByteWriter canonical;
+    CodingState fresh;
+    geometry(canonical, s.geometry, world_scale, fresh, false);
+    const auto [earlier, is_new] = written.emplace(canonical.bytes(), shape_count);
+    const uint8_t kind = is_new ? static_cast<uint8_t>(s.geometry.index()) : repeated_shape_kind;
     out.byte(static_cast<uint8_t>(kind | (s.colour ? has_colour_flag : 0)), Field::structure);
     out.text(s.name);
     if (s.colour) colour(*s.colour);
-    if (const auto* t = std::get_if<TrimmedSurface>(&s.geometry)) {
-      const bool parallelogram = write_surface(out, t->surface, q);
-      ++(parallelogram ? report.parallelogram_nets : report.row_nets);
-      const int e = trim_step_exponent(t->surface, options, world_scale);
-      out.varsint(e, Field::structure);
-      write_trim_loops(out, t->loops, e, previous_edge);
-      if (!t->loops.empty()) report.trim_bound = std::max(report.trim_bound, trim_bound(t->surface, e, world_scale));
-    } else if (const auto* c = std::get_if<NurbsCurve>(&s.geometry)) {
-      write_curve(out, *c, q);
-    } else if (const auto* m = std::get_if<TriangleMesh>(&s.geometry)) {
-      write_triangle_mesh(out, *m, q);
-    } else {
-      write_polygon_mesh(out, std::get<PolygonMesh>(s.geometry), q);
-    }
+    if (is_new) geometry(out, s.geometry, world_scale, state, true);
+    else out.varuint(shape_count - 1 - earlier->second, Field::index);
+    ++shape_count;
   }
 
   void node(const SceneNode& n, const Eigen::Affine3d& parent) {
@@ -78,7 +95,7 @@ std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteRep
   const double q = point_step(scene, options);
   r.point_step = q;
   r.point_bound = q * std::sqrt(3.0) / 2.0 * largest_world_scale(scene);
-  SceneEncoder encoder{ByteWriter{}, options, q, r};
+  SceneEncoder encoder{ByteWriter{}, options, q, r, {}, {}, 0};
   encoder.node(scene.root, Eigen::Affine3d::Identity());
   // The scene header goes first; it states the bound, known once every face's trim grid is chosen.
   ByteWriter header;
@@ -91,6 +108,15 @@ std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteRep
   header.float64(r.deviation_bound());
   ByteWriter payload = header;
   payload.append(encoder.out);
+  for (uint8_t context : payload.contexts()) {
+    const int field = context / 2;
+    if (field >= field_count) r.float_bytes++;
+    else if (field == static_cast<int>(Field::point)) r.point_bytes++;
+    else if (field == static_cast<int>(Field::trim)) r.trim_bytes++;
+    else if (field == static_cast<int>(Field::knot)) r.knot_bytes++;
+    else if (field == static_cast<int>(Field::weight)) r.weight_bytes++;
+    else r.other_bytes++;
+  }
   return pack(payload, options.coder, &r);
 }
 

@@ -148,5 +148,33 @@ TEST(CnbDamage, KnotsThatDoNotFitTheNet) {
             name + ": decoded byte " + std::to_string(knots_at) + ": knot multiplicities add up to 3, the net needs 4");
 }
 
+// Repeats of a large shape: refused once the scene would hold more numbers than the payload allows.
+TEST(CnbDamage, RepeatsBeyondTheNumberBudget) {
+  cnb::ByteWriter w = scene_header_and_root();
+  const int vertices = 1000, repeats = 2000;
+  w.varuint(1 + repeats, cnb::Field::count);  // shapes
+  w.byte(2);                                  // a triangle mesh
+  w.text("");
+  w.varuint(vertices, cnb::Field::count);
+  for (int i = 0; i < 3 * vertices; ++i) w.varsint(0, cnb::Field::point);
+  w.varuint(1, cnb::Field::count);
+  for (int k = 0; k < 3; ++k) w.varsint(0, cnb::Field::index);
+  w.byte(0);  // no normals
+  std::vector<size_t> repeat_at;
+  for (int r = 0; r < repeats; ++r) {
+    w.byte(4);  // the same geometry as the shape just before
+    w.text("");
+    repeat_at.push_back(w.bytes().size());
+    w.varuint(0, cnb::Field::index);
+  }
+  w.varuint(0, cnb::Field::count);  // children
+  const size_t budget = 256 * w.bytes().size() + (size_t(1) << 20), each = 3 * vertices + 3;
+  const size_t failing = budget / each;  // shapes that fit: the mesh and failing - 1 repeats
+  ASSERT_LT(failing, size_t(repeats));
+  EXPECT_EQ(error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr)),
+            name + ": decoded byte " + std::to_string(repeat_at[failing - 1]) + ": the scene would hold more than " +
+                std::to_string(budget) + " numbers (256 per payload byte and 1048576)");
+}
+
 }  // namespace
 }  // namespace cadnurbs

@@ -6,7 +6,10 @@
 #include <cmath>
 #include <iostream>
 
+#include "analysis/compact_scene.hpp"
 #include "analysis/paired_scene_deviation.hpp"
+#include "analysis/tessellation_hints.hpp"
+#include "core/bounding_box.hpp"
 #include "core/nurbs_surface.hpp"
 #include "formats/cnb/cnb_quantisation.hpp"
 #include "formats/cnb/cnb_reader.hpp"
@@ -15,6 +18,7 @@
 #include "formats/common/gzip.hpp"
 #include "formats/step/step_reader.hpp"
 #include "formats/vrml/vrml_reader.hpp"
+#include "formats/vrml/vrml_writer.hpp"
 
 namespace cadnurbs {
 namespace {
@@ -145,13 +149,41 @@ TEST(CnbSteps, ScaledNodesKeepTheWorldDeviation) {
   EXPECT_GT(r.measured.max(), 0.05);
 }
 
-TEST(CnbSizes, Capping90SmallerThanGzippedX3dv) {
-  const std::string x3dv = read_file(sample_path("capping-90.x3dv"));
-  const size_t gzipped = gzip(x3dv).size();
-  const RoundTrip r = round_trip(read_vrml(sample_path("capping-90.x3dv")), 1.0);
-  std::cout << "capping-90 at 1 mm: .cnb " << r.bytes.size() << " bytes; .x3dv " << x3dv.size() << ", gzip'd "
-            << gzipped << "\n";
-  EXPECT_LT(r.bytes.size(), gzipped);
+// The .x3dv as `convert` writes it: compact (or --exact-nurbs), with tessellation hints for 1e-3 of the
+// diagonal, as the sample files are.
+std::string x3dv_as_convert_writes(const Scene& scene) {
+  VrmlWriteOptions options;
+  options.display_deviation = 1e-3 * scene_bounding_box(scene).diagonal().norm();
+  options.tessellation_hints = &tessellation_hints;
+  return format_vrml(scene, options);
+}
+
+// capping samples (the compact .x3dv shipped) and the corpus part (compact as convert makes it, and every
+// face as its source NURBS): the .cnb against the .x3dv and its gzip, at D = 1 mm and 0.01 mm.
+TEST(CnbSizes, SmallerThanGzippedX3dv) {
+  struct Part {
+    std::string name;
+    Scene scene;
+    std::string x3dv;
+  };
+  std::vector<Part> parts;
+  for (const std::string name : {"capping-90", "capping-end", "capping-post"})
+    parts.push_back({name, read_vrml(sample_path(name + ".x3dv")), read_file(sample_path(name + ".x3dv"))});
+  const Scene& exact = corpus_scene();
+  const Scene compact = compact_scene(exact, 1e-6 * scene_bounding_box(exact).diagonal().norm());
+  parts.push_back({"dm1-id-214 compact", compact, x3dv_as_convert_writes(compact)});
+  parts.push_back({"dm1-id-214 exact", exact, x3dv_as_convert_writes(exact)});
+  for (const auto& part : parts) {
+    const size_t gzipped = gzip(part.x3dv).size();
+    for (double d : {1.0, 0.01}) {
+      const RoundTrip r = round_trip(part.scene, d);
+      std::cout << part.name << " D=" << d << " mm: .cnb " << r.bytes.size() << " bytes (deflate " << r.report.deflate_bytes
+                << ", arithmetic " << r.report.arithmetic_bytes << "; payload " << r.report.payload_bytes << "), .x3dv "
+                << part.x3dv.size() << ", .x3dv.gz " << gzipped << "; measured " << r.measured.max() << ", bound "
+                << r.report.deviation_bound() << "\n";
+      EXPECT_LT(r.bytes.size(), gzipped) << part.name << " at D = " << d;
+    }
+  }
 }
 
 }  // namespace
