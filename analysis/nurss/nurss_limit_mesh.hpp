@@ -8,6 +8,10 @@
 // surface at the refined knot grid), so its deviation there is only the chord error of the triangles;
 // at extraordinary faces the face point approximates the limit point (better with every level). A
 // clamped net's boundary faces have their face points on the boundary curve, so the mesh reaches it.
+// Zero knot intervals (clamped ends, double knots, the lids' creases) leave faces of no width whose face
+// points coincide or lie on one line: equal face points are one vertex, and triangles of no area
+// (twice the area <= 1e-10 x the longest side squared) are left out, so a closed NURSS gives a closed,
+// manifold mesh.
 #include <vector>
 
 #include "analysis/nurss/nurss_mesh.hpp"
