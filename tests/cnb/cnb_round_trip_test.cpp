@@ -116,6 +116,64 @@ TEST(CnbCorpus, BothEntropyCodersDecodeToTheSameScene) {
   EXPECT_EQ(a.measured.max(), b.measured.max());
 }
 
+// What the samples lack: a 3D rational curve, a triangle mesh with normals, a rotated and translated
+// node, colours and names on nodes and shapes.
+TEST(CnbRoundTrip, CurvesMeshesTransformsColoursNames) {
+  Scene scene;
+  scene.unit = {"inch", 25.4};
+  scene.root.name = "assembly";
+  scene.root.colour = Colour{0.1, 0.2, 0.3};
+  SceneNode placed;
+  placed.name = "placed";
+  placed.transform = Eigen::Translation3d(10, 20, 30) * Eigen::AngleAxisd(0.5, Eigen::Vector3d(1, 2, 3).normalized());
+  NurbsCurve rail;
+  rail.order = 3;
+  rail.knots = {0, 0, 0, 1, 2, 3, 3, 3};
+  rail.points = {{0, 0, 0}, {10, 3, 1}, {20, -4, 2}, {30, 5, 3.3333}, {40, 0, 4}};
+  rail.weights = {1, 0.7071067811865476, 1, 0.7071067811865476, 1};
+  placed.shapes.push_back({"rail", rail, Colour{1, 0.5, 0}});
+  TriangleMesh tetrahedron;
+  tetrahedron.positions = {{0, 0, 0}, {5.55, 0, 0}, {0, 5.55, 0}, {0, 0, 5.55}};
+  tetrahedron.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  for (const auto& t : tetrahedron.triangles) {
+    const auto& p = tetrahedron.positions;
+    const Eigen::Vector3d n = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).normalized();
+    for (int k = 0; k < 3; ++k) tetrahedron.corner_normals.push_back(n);
+  }
+  placed.shapes.push_back({"fallback", tetrahedron, std::nullopt});
+  scene.root.children.push_back(placed);
+
+  const RoundTrip r = round_trip(scene, 0.1);
+  EXPECT_EQ(r.decoded.unit.name, "inch");
+  EXPECT_EQ(r.decoded.unit.millimetres, 25.4);
+  EXPECT_EQ(r.decoded.root.name, "assembly");
+  ASSERT_TRUE(r.decoded.root.colour);
+  EXPECT_NEAR(r.decoded.root.colour->g, 0.2, 0.5 / 65535);
+  ASSERT_EQ(r.decoded.root.children.size(), 1u);
+  const SceneNode& back = r.decoded.root.children[0];
+  EXPECT_EQ(back.name, "placed");
+  EXPECT_TRUE(back.transform.matrix() == placed.transform.matrix());
+  ASSERT_EQ(back.shapes.size(), 2u);
+  EXPECT_EQ(back.shapes[0].name, "rail");
+  ASSERT_TRUE(back.shapes[0].colour);
+  EXPECT_EQ(back.shapes[0].colour->r, 1.0);
+  EXPECT_NEAR(back.shapes[0].colour->g, 0.5, 0.5 / 65535);
+  const auto& curve = std::get<NurbsCurve>(back.shapes[0].geometry);
+  EXPECT_EQ(curve.knots, rail.knots);
+  EXPECT_EQ(curve.weights, rail.weights);
+  EXPECT_EQ(back.shapes[1].name, "fallback");
+  EXPECT_FALSE(back.shapes[1].colour);
+  const auto& mesh = std::get<TriangleMesh>(back.shapes[1].geometry);
+  EXPECT_EQ(mesh.triangles, tetrahedron.triangles);
+  ASSERT_EQ(mesh.corner_normals.size(), tetrahedron.corner_normals.size());
+  for (size_t i = 0; i < mesh.corner_normals.size(); ++i)
+    EXPECT_LE((mesh.corner_normals[i] - tetrahedron.corner_normals[i]).cwiseAbs().maxCoeff(), 0.5 / 32767 + 1e-12);
+  EXPECT_GT(r.measured.curves, 0.0);
+  EXPECT_GT(r.measured.meshes, 0.0);
+  EXPECT_LE(r.measured.max(), r.report.deviation_bound());
+  EXPECT_LE(r.report.deviation_bound(), 0.1);
+}
+
 // Doubling any step would let the bound exceed its share of D: the steps are the coarsest.
 TEST(CnbSteps, CoarsestTheBoundAllows) {
   const Scene& scene = corpus_scene();
