@@ -15,6 +15,7 @@ namespace cadnurbs::cnb {
 struct CodingState {
   int previous_edge = -1;
   KnotCache knots;
+  bool trim_extrapolation = true;  // writer only: whether faces may take the extrapolating trim predictor
 };
 
 // A surface's net on the grid of step q, predicted along rows (each point from the one before it, u
@@ -23,8 +24,9 @@ struct CodingState {
 bool write_surface(ByteWriter& out, const NurbsSurface& surface, double q, CodingState& state);
 NurbsSurface read_surface(ByteReader& in, double q, CodingState& state);
 
-// Trimming loops on the grid 2^exponent in (u,v), predicted from the previous point along the loop; a
-// segment's first point snapped onto the previous segment's last where they were within half a step
+// Trimming loops on the grid 2^exponent in (u,v), predicted from the previous point along the loop (or,
+// within a segment, by extrapolating the two previous points, where the face's residuals get smaller and
+// state.trim_extrapolation allows it); a segment's first point snapped onto the previous segment's last where they were within half a step
 // (so closed loops stay closed). Edge numbers as differences from the previous segment's, scene-wide.
 void write_trim_loops(ByteWriter& out, const std::vector<TrimLoop>& loops, int exponent, CodingState& state);
 std::vector<TrimLoop> read_trim_loops(ByteReader& in, int exponent, CodingState& state);

@@ -1,6 +1,7 @@
 // Trimming loops: segments (2D NURBS curves or polylines) with their edge numbers, control points on the
 // face's (u,v) grid, predicted along the loop.
 #include <array>
+#include <bit>
 #include <cmath>
 #include <string>
 
@@ -42,25 +43,62 @@ std::vector<std::vector<Cell2>> loop_cells(const TrimLoop& loop, double step) {
   return cells;
 }
 
-void write_cells(ByteWriter& out, const std::vector<Cell2>& cells, Cell2& previous) {
-  for (const auto& c : cells) {
-    out.varsint(c[0] - previous[0], Field::trim);
-    out.varsint(c[1] - previous[1], Field::trim);
-    previous = c;
+// The prediction of the next trim point of a face: the previous point (DPCM), or, within a segment,
+// the line through the two previous points continued (pcurves are smooth, their points nearly evenly
+// spaced). A segment's first point is always predicted by the previous point, which it usually is.
+struct TrimPrediction {
+  bool extrapolate = false;
+  Cell2 last{0, 0}, before{0, 0};
+  int seen = 0;  // points so far in the face
+
+  Cell2 predict(bool segment_start) const {
+    if (!extrapolate || segment_start || seen < 2) return last;
+    return {2 * last[0] - before[0], 2 * last[1] - before[1]};
+  }
+  void push(const Cell2& c) {
+    before = last;
+    last = c;
+    ++seen;
+  }
+};
+
+void write_cells(ByteWriter& out, const std::vector<Cell2>& cells, TrimPrediction& prediction) {
+  for (size_t i = 0; i < cells.size(); ++i) {
+    const Cell2 p = prediction.predict(i == 0);
+    out.varsint(cells[i][0] - p[0], Field::trim);
+    out.varsint(cells[i][1] - p[1], Field::trim);
+    prediction.push(cells[i]);
   }
 }
 
-std::vector<Eigen::Vector2d> read_cells(ByteReader& in, size_t n, double step, Cell2& previous) {
+// Bits the residuals of a face's trim points take with or without extrapolation, roughly.
+uint64_t residual_bits(const std::vector<std::vector<std::vector<Cell2>>>& face, bool extrapolate) {
+  TrimPrediction prediction;
+  prediction.extrapolate = extrapolate;
+  uint64_t bits = 0;
+  for (const auto& loop : face)
+    for (const auto& segment : loop)
+      for (size_t i = 0; i < segment.size(); ++i) {
+        const Cell2 p = prediction.predict(i == 0);
+        for (int k = 0; k < 2; ++k) bits += std::bit_width(zigzag(segment[i][k] - p[k])) + 1;
+        prediction.push(segment[i]);
+      }
+  return bits;
+}
+
+std::vector<Eigen::Vector2d> read_cells(ByteReader& in, size_t n, double step, TrimPrediction& prediction) {
   if (n > in.left() / 2) in.fail(std::to_string(n) + " trim points cannot fit in the " + std::to_string(in.left()) + " bytes left");
   std::vector<Eigen::Vector2d> points;
   points.reserve(n);
   for (size_t i = 0; i < n; ++i) {
+    Cell2 c = prediction.predict(i == 0);
     for (int k = 0; k < 2; ++k) {
       const size_t at = in.offset();
-      previous[k] += in.varsint(Field::trim);
-      if (std::abs(static_cast<double>(previous[k])) > 0x1p52) in.fail("trim coordinate outside the grid's range", at);
+      c[k] += in.varsint(Field::trim);
+      if (std::abs(static_cast<double>(c[k])) > 0x1p52) in.fail("trim coordinate outside the grid's range", at);
     }
-    points.emplace_back(static_cast<double>(previous[0]) * step, static_cast<double>(previous[1]) * step);
+    prediction.push(c);
+    points.emplace_back(static_cast<double>(c[0]) * step, static_cast<double>(c[1]) * step);
   }
   return points;
 }
@@ -71,12 +109,18 @@ void write_trim_loops(ByteWriter& out, const std::vector<TrimLoop>& loops, int e
   int& previous_edge = state.previous_edge;
   const double step = std::ldexp(1.0, exponent);
   out.varuint(loops.size(), Field::count);
-  Cell2 previous{0, 0};
-  for (const auto& loop : loops) {
+  if (loops.empty()) return;
+  std::vector<std::vector<std::vector<Cell2>>> face;
+  for (const auto& loop : loops) face.push_back(loop_cells(loop, step));
+  TrimPrediction prediction;
+  prediction.extrapolate = state.trim_extrapolation && residual_bits(face, true) < residual_bits(face, false);
+  out.byte(prediction.extrapolate ? 1 : 0, Field::structure);
+  for (size_t l = 0; l < loops.size(); ++l) {
+    const TrimLoop& loop = loops[l];
     out.varuint(loop.segments.size(), Field::count);
     const bool has_edges = !loop.edges.empty();
     out.byte(has_edges ? 1 : 0, Field::structure);
-    const auto cells = loop_cells(loop, step);
+    const auto& cells = face[l];
     for (size_t s = 0; s < loop.segments.size(); ++s) {
       const auto& segment = loop.segments[s];
       const auto* curve = std::get_if<NurbsCurve>(&segment);
@@ -94,7 +138,7 @@ void write_trim_loops(ByteWriter& out, const std::vector<TrimLoop>& loops, int e
       } else {
         out.varuint(cells[s].size(), Field::count);
       }
-      write_cells(out, cells[s], previous);
+      write_cells(out, cells[s], prediction);
     }
   }
 }
@@ -104,7 +148,12 @@ std::vector<TrimLoop> read_trim_loops(ByteReader& in, int exponent, CodingState&
   const double step = std::ldexp(1.0, exponent);
   const size_t loop_count = in.count(3);
   std::vector<TrimLoop> loops(loop_count);
-  Cell2 previous{0, 0};
+  if (loops.empty()) return loops;
+  TrimPrediction prediction;
+  const size_t predictor_at = in.offset();
+  const uint8_t extrapolate = in.byte(Field::structure);
+  if (extrapolate > 1) in.fail("trim predictor " + std::to_string(extrapolate) + " is neither 0 nor 1", predictor_at);
+  prediction.extrapolate = extrapolate == 1;
   for (auto& loop : loops) {
     const size_t segments_at = in.offset();
     const size_t segment_count = in.count(4);
@@ -137,13 +186,13 @@ std::vector<TrimLoop> read_trim_loops(ByteReader& in, int exponent, CodingState&
         if (n < 1) in.fail("a trimming curve without control points", n_at);
         c.knots = read_knots(in, n + order, state.knots);
         c.weights = read_weights(in, n);
-        for (const auto& p : read_cells(in, n, step, previous)) c.points.emplace_back(p.x(), p.y(), 0.0);
+        for (const auto& p : read_cells(in, n, step, prediction)) c.points.emplace_back(p.x(), p.y(), 0.0);
         loop.segments.emplace_back(std::move(c));
       } else {
         const size_t n_at = in.offset();
         const size_t n = in.count(2);
         if (n < 2) in.fail("a polyline of " + std::to_string(n) + " points", n_at);
-        loop.segments.emplace_back(Polyline2D{read_cells(in, n, step, previous)});
+        loop.segments.emplace_back(Polyline2D{read_cells(in, n, step, prediction)});
       }
     }
   }

@@ -52,6 +52,7 @@ struct SceneEncoder {
   void shape(const Shape& s, double world_scale) {
     ByteWriter canonical;
     CodingState fresh;
+    fresh.trim_extrapolation = state.trim_extrapolation;
     geometry(canonical, s.geometry, world_scale, fresh, false);
     const auto [earlier, is_new] = written.emplace(canonical.bytes(), shape_count);
     const uint8_t kind = is_new ? static_cast<uint8_t>(s.geometry.index()) : repeated_shape_kind;
@@ -85,17 +86,15 @@ struct SceneEncoder {
   }
 };
 
-}  // namespace
-
-std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteReport* report) {
-  validate(scene);
-  CnbWriteReport local;
-  CnbWriteReport& r = report ? *report : local;
+// The file with trim points predicted by the previous point only, or per face by whichever of that and
+// extrapolation leaves the smaller residuals.
+std::string encode(const Scene& scene, const CnbOptions& options, bool trim_extrapolation, CnbWriteReport& r) {
   r = CnbWriteReport{};
   const double q = point_step(scene, options);
   r.point_step = q;
   r.point_bound = q * std::sqrt(3.0) / 2.0 * largest_world_scale(scene);
   SceneEncoder encoder{ByteWriter{}, options, q, r, {}, {}, 0};
+  encoder.state.trim_extrapolation = trim_extrapolation;
   encoder.node(scene.root, Eigen::Affine3d::Identity());
   // The scene header goes first; it states the bound, known once every face's trim grid is chosen.
   ByteWriter header;
@@ -118,6 +117,20 @@ std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteRep
     else r.other_bytes++;
   }
   return pack(payload, options.coder, &r);
+}
+
+}  // namespace
+
+std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteReport* report) {
+  validate(scene);
+  // Smaller residuals are not always fewer bytes: extrapolation breaks the repeats deflate finds.
+  // Both are written and the smaller kept.
+  CnbWriteReport plain_report, extrapolated_report;
+  std::string plain = encode(scene, options, false, plain_report);
+  std::string extrapolated = encode(scene, options, true, extrapolated_report);
+  const bool take_plain = plain.size() <= extrapolated.size();
+  if (report) *report = take_plain ? plain_report : extrapolated_report;
+  return take_plain ? plain : extrapolated;
 }
 
 }  // namespace cadnurbs
