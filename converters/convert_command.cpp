@@ -2,13 +2,11 @@
 #include <filesystem>
 #include <iostream>
 
-#include "analysis/compact_scene.hpp"
-#include "analysis/sew_faces.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
 #include "analysis/tessellate_uniform.hpp"
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
 #include "converters/file_formats.hpp"
+#include "converters/scene_preparation.hpp"
 #include "core/bounding_box.hpp"
 #include "core/length_unit.hpp"
 
@@ -47,15 +45,6 @@ std::string help() {
          "  --self-contained    VRML97: paste the NURBS PROTO implementations into the file\n"
          "A STEP/IGES face that cannot be written as a trimmed NURBS is written as a mesh instead;\n"
          "convert lists each such face and says how many there were.\n";
-}
-
-// The written precision: what compaction may move a coordinate by (model units).
-double written_tolerance(const Scene& scene, int significant_digits) {
-  const auto box = scene_bounding_box(scene);
-  const double diagonal = box.isEmpty() ? 1.0 : std::max(box.diagonal().norm(), 1e-300);
-  if (significant_digits <= 0) return 1e-6 * diagonal;
-  const double largest = box.isEmpty() ? 1.0 : std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
-  return 0.5 * std::pow(10.0, 1 - significant_digits) * std::max(largest, 1e-300);
 }
 
 void print_compaction(const std::string& out, const CompactReport& r) {
@@ -122,23 +111,17 @@ int run_convert(const std::vector<std::string>& args) {
     how = ", uniform " + std::to_string(steps) + " steps per span";
   } else if (mesh) {
     const double d = deviation > 0 ? deviation : 1e-3 * box.diagonal().norm();
-    // A file that names no edges (VRML/X3D, our own NURBS files) gets them back by sewing, so that its
-    // mesh is as watertight as the B-rep's; STEP/IGES faces carry the B-rep's edges already.
-    const SceneCounts counts = count_entities(scene);
-    const bool sew = loaded.face_count == 0 && counts.surfaces + counts.polygon_meshes > 0;
-    Scene faces;
-    if (sew) {
-      const SewingTolerance tolerance = sewing_tolerance(box.diagonal().norm(), d);
-      SewingReport sewing;
-      faces = sew_faces(scene, tolerance, &sewing);
-      std::cout << in << ": sewn at " << tolerance.first << " " << scene.unit.name << " (gaps up to "
-                << tolerance.largest << "; widest bridged " << sewing.widest_gap << "): " << sewing.shared_edges
+    const bool check_areas = a.has("check-areas");
+    CertifiedMesh meshed = certified_mesh(loaded, scene, d, check_areas);
+    if (meshed.sewn) {
+      const SewingReport& sewing = meshed.sewing;
+      std::cout << in << ": sewn at " << meshed.sewing_tolerance.first << " " << scene.unit.name << " (gaps up to "
+                << meshed.sewing_tolerance.largest << "; widest bridged " << sewing.widest_gap << "): " << sewing.shared_edges
                 << " shared edges, " << sewing.open_pieces << " open boundary pieces, " << sewing.cuts
                 << " pieces cut at a neighbour's vertex, " << sewing.polygon_faces << " polygons as faces\n";
     }
-    TessellationReport report;
-    const bool check_areas = a.has("check-areas");
-    written = tessellate_to_deviation(sew ? faces : scene, d, &report, check_areas);
+    const TessellationReport& report = meshed.report;
+    written = std::move(meshed.meshes);
     how = ", max deviation " + std::to_string(d) + " " + scene.unit.name + "; certified " +
           std::to_string(report.certified_deviation) + ", " + std::to_string(report.uncertified_triangles) +
           " uncertified triangles, " + std::to_string(report.unshared_edge_uses) + " unshared edge uses" +

@@ -14,6 +14,7 @@ const char* kUsage =
     "                    [--display-deviation D] [--precision N] [--pretty] [--euclidean] [--self-contained]\n"
     "  info    IN [--euclidean]\n"
     "  capping --shape NAME|all -o OUT [--path FILE --profile FILE] [--max-chord-deviation D]\n"
+    "  report  IN... [--deviation D] [--format md|json|csv|html] [-o FILE] [--files DIR] [--records DIR] [--curve]\n"
     "  demo    [-o DIR]\n"
     "'cadnurbs COMMAND --help' tells more.\n";
 
@@ -22,7 +23,7 @@ const char* kUsage =
 int main(int argc, char** argv) {
   using namespace cadnurbs;
   const std::map<std::string, int (*)(const std::vector<std::string>&)> commands = {
-      {"convert", run_convert}, {"info", run_info}, {"capping", run_capping}, {"demo", run_demo}};
+      {"convert", run_convert}, {"info", run_info}, {"capping", run_capping}, {"demo", run_demo}, {"report", run_report}};
   if (argc < 2) {
     std::cerr << kUsage;
     return 2;

@@ -11,7 +11,7 @@ debian_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev
-  libcgal-dev libopenmesh-dev libdraco-dev libtbb-dev
+  libcgal-dev libopenmesh-dev libdraco-dev libmeshoptimizer-dev libtinygltf-dev nlohmann-json3-dev libtbb-dev
   view3dscene xvfb xauth chromium fonts-dejavu-core
 )
 
@@ -30,5 +30,18 @@ if [ -f "$viewer_dir/package-lock.json" ]; then
     (cd "$viewer_dir" && npm ci --no-audit --no-fund --loglevel=error)
   else
     echo "setup: npm packages present"
+  fi
+fi
+
+# What the HTML report inlines (Chart.js, X_ITE), pinned by package-lock.json and embedded into the
+# library at build time (analysis/report/html/CMakeLists.txt).
+report_dir="$here/analysis/report/html"
+if [ -f "$report_dir/package-lock.json" ]; then
+  if [ ! -d "$report_dir/node_modules/chart.js" ] || [ ! -d "$report_dir/node_modules/x_ite" ] \
+     || [ "$report_dir/package-lock.json" -nt "$report_dir/node_modules/.package-lock.json" ]; then
+    echo "setup: npm ci in analysis/report/html"
+    (cd "$report_dir" && npm ci --no-audit --no-fund --loglevel=error)
+  else
+    echo "setup: report npm packages present"
   fi
 fi

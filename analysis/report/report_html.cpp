@@ -94,28 +94,11 @@ std::string x_ite_stylesheet() {
   return css;
 }
 
-std::string number(double value, int digits = 4) {
-  if (std::isnan(value)) return "-";
-  std::ostringstream out;
-  out << std::setprecision(digits) << value;
-  return out.str();
-}
-
 // 1234567 -> "1 234 567" (narrow no-break spaces): byte counts people can read.
 std::string grouped(long value) {
   std::string digits = std::to_string(value < 0 ? -value : value);
   for (int at = int(digits.size()) - 3; at > 0; at -= 3) digits.insert(std::size_t(at), "\u202f");
   return value < 0 ? "-" + digits : digits;
-}
-
-// The smaller of the file and its gzip'd form: what delivering that representation costs.
-long delivered_bytes(const RepresentationFigures& r) { return std::min(r.bytes, r.gzip_bytes); }
-
-const RepresentationFigures* smallest(const PartRecord& record, RepresentationKind kind) {
-  const RepresentationFigures* best = nullptr;
-  for (const auto& r : record.representations)
-    if (r.kind == kind && (!best || delivered_bytes(r) < delivered_bytes(*best))) best = &r;
-  return best;
 }
 
 // Whether record `index` gets 3D views: measured, and given a scene text.
@@ -349,17 +332,17 @@ std::string summary_table(const std::vector<PartRecord>& records) {
   for (std::size_t i = 0; i < records.size(); ++i) {
     const auto& r = records[i];
     if (r.failed) continue;
-    const auto* nurbs = smallest(r, RepresentationKind::nurbs);
-    const auto* mesh = smallest(r, RepresentationKind::mesh);
+    const auto* nurbs = smallest_representation(r, RepresentationKind::nurbs);
+    const auto* mesh = smallest_representation(r, RepresentationKind::mesh);
     out << "<tr><td><a href=\"#part-" << i << "\">" << escape_html(r.input) << "</a></td><td class=\"n\">"
-        << number(r.deviation) << " " << escape_html(r.unit) << "</td><td class=\"n\">" << grouped(r.nurbs.floats)
+        << report_number(r.deviation) << " " << escape_html(r.unit) << "</td><td class=\"n\">" << grouped(r.nurbs.floats)
         << "</td><td class=\"n\">" << grouped(r.nurbs.trim_floats) << "</td><td class=\"n\">"
         << grouped(r.mesh.indexed_floats) << "</td><td>" << (nurbs ? escape_html(nurbs->label) : "-")
         << "</td><td class=\"n\">" << (nurbs ? grouped(delivered_bytes(*nurbs)) : "-") << "</td><td>"
         << (mesh ? escape_html(mesh->label) : "-") << "</td><td class=\"n\">"
         << (mesh ? grouped(delivered_bytes(*mesh)) : "-") << "</td><td class=\"n\">"
         << (nurbs && mesh && delivered_bytes(*nurbs) > 0
-                ? number(double(delivered_bytes(*mesh)) / double(delivered_bytes(*nurbs)), 3)
+                ? report_number(double(delivered_bytes(*mesh)) / double(delivered_bytes(*nurbs)), 3)
                 : "-")
         << "</td></tr>\n";
   }
@@ -385,7 +368,7 @@ std::string crossover_sentences(const PartRecord& r) {
     out << "<p>" << escape_html(c.mesh_key) << " against " << escape_html(c.nurbs_key) << " (" << grouped(c.nurbs_bytes)
         << " bytes): ";
     if (!std::isnan(c.deviation))
-      out << "the mesh costs more below D = " << number(c.deviation, 3) << " " << escape_html(r.unit) << ".";
+      out << "the mesh costs more below D = " << report_number(c.deviation, 3) << " " << escape_html(r.unit) << ".";
     else if (c.mesh_larger_everywhere)
       out << "the mesh costs more at every D measured.";
     else
@@ -406,12 +389,12 @@ std::string part_section(const std::vector<PartRecord>& records, std::size_t ind
   const PartRecord& r = records[index];
   std::ostringstream out;
   out << "<section class=\"part\" id=\"part-" << index << "\"><h2>" << escape_html(r.input) << "</h2>\n<p>Maximum deviation D = "
-      << number(r.deviation) << " " << escape_html(r.unit) << " (bounding-box diagonal " << number(r.diagonal) << " "
+      << report_number(r.deviation) << " " << escape_html(r.unit) << " (bounding-box diagonal " << report_number(r.diagonal) << " "
       << escape_html(r.unit) << "). NURBS: " << r.nurbs.surfaces << " surfaces, " << grouped(r.nurbs.control_points)
       << " control points, " << grouped(r.nurbs.knots) << " knots; compact form "
       << grouped(r.compact_nurbs.control_points) << " control points, " << grouped(r.compact_nurbs.knots) << " knots, "
       << grouped(r.compact_nurbs.polygon_vertices) << " polygon vertices. Mesh at D: " << grouped(r.mesh.vertices)
-      << " vertices, " << grouped(r.mesh.triangles) << " triangles (certified " << number(r.mesh_certified_deviation)
+      << " vertices, " << grouped(r.mesh.triangles) << " triangles (certified " << report_number(r.mesh_certified_deviation)
       << ").</p>\n<div class=\"charts\">\n<figure class=\"chart\"><div class=\"chart-box\"><canvas class=\"bars\" "
          "data-part=\""
       << index << "\" role=\"img\" aria-label=\"bytes per representation\"></canvas></div><figcaption>Bytes of every "
@@ -436,7 +419,7 @@ std::string part_section(const std::vector<PartRecord>& records, std::size_t ind
   for (const auto& f : r.representations)
     out << "<tr><td>" << escape_html(f.label) << "</td><td class=\"n\">" << grouped(f.bytes) << "</td><td class=\"n\">"
         << grouped(f.gzip_bytes) << "</td><td class=\"n\">" << grouped(f.floats) << "</td><td class=\"n\">"
-        << grouped(f.integers) << "</td><td class=\"n\">" << number(f.deviation) << "</td><td>"
+        << grouped(f.integers) << "</td><td class=\"n\">" << report_number(f.deviation) << "</td><td>"
         << escape_html(f.deviation_basis) << "</td></tr>\n";
   out << "</tbody></table>\n";
   if (!r.warnings.empty()) {

@@ -163,13 +163,17 @@ NodePtr mesh_node(const TriangleMesh& mesh, VrmlDialect dialect, const GeometryP
   for (const auto& t : mesh.triangles) indices.values.insert(indices.values.end(), {t[0], t[1], t[2], -1});
   node->set("coordIndex", std::move(indices));
   if (!mesh.corner_normals.empty()) {
-    // Corners share a written normal when their normals are equal: smooth regions store each once.
+    // Corners share a written normal when their normals are written alike: smooth regions store each once,
+    // and normals that differ only below the written precision are one vector in the file.
+    const NumberPrecision normal_precision = with_digits(normal_tolerance, p);
     std::map<std::array<double, 3>, int> index_of;
     MFVec3f vectors;
     MFInt32 normal_indices;
     for (size_t corner = 0; corner < mesh.corner_normals.size(); ++corner) {
       const auto& n = mesh.corner_normals[corner];
-      const auto [it, inserted] = index_of.try_emplace({n.x(), n.y(), n.z()}, static_cast<int>(vectors.values.size()));
+      const std::array<double, 3> written = {written_value(n.x(), normal_precision), written_value(n.y(), normal_precision),
+                                             written_value(n.z(), normal_precision)};
+      const auto [it, inserted] = index_of.try_emplace(written, static_cast<int>(vectors.values.size()));
       if (inserted) vectors.values.push_back(n);
       normal_indices.values.push_back(it->second);
       if (corner % 3 == 2) normal_indices.values.push_back(-1);

@@ -1,0 +1,219 @@
+#include "converters/part_measurement.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <set>
+#include <cmath>
+#include <filesystem>
+#include <unistd.h>
+
+#include "analysis/measure_deviation.hpp"
+#include "analysis/report/storage_crossover.hpp"
+#include "analysis/scene_triangles.hpp"
+#include "analysis/weld_exact.hpp"
+#include "converters/file_formats.hpp"
+#include "converters/scene_preparation.hpp"
+#include "core/bounding_box.hpp"
+#include "formats/common/file_io.hpp"
+#include "formats/common/gzip.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The NURBS files the report writes: one row per representation (what convert writes with these options).
+struct NurbsFile {
+  const char* key;
+  const char* label;
+  const char* extension;
+  bool compact;
+};
+constexpr NurbsFile kNurbsFiles[] = {
+    {"wrl-compact", "VRML97 NURBS, compact", ".wrl", true},
+    {"wrl-exact", "VRML97 NURBS, exact (--exact-nurbs)", ".wrl", false},
+    {"x3dv-compact", "X3D classic NURBS, compact", ".x3dv", true},
+    {"x3dv-exact", "X3D classic NURBS, exact (--exact-nurbs)", ".x3dv", false},
+};
+
+// The mesh files: the certified mesh at D as written by the mesh writers.
+struct MeshFile {
+  const char* key;
+  const char* label;
+  const char* extension;
+};
+constexpr MeshFile kMeshFiles[] = {
+    {"wrl-mesh", "VRML97 IndexedFaceSet at D", ".wrl"},
+    {"stl-mesh", "binary STL at D", ".stl"},
+};
+
+// The D values of the storage-against-accuracy curve, as fractions of the bounding-box diagonal.
+constexpr double kCurveFractions[] = {1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5};
+// A curve point whose mesh would exceed this many triangles is left out (its memory, not its truth).
+constexpr long kCurveTriangleLimit = 4'000'000;
+
+// A folder that is removed when the measurement ends, unless the user named it.
+class Folder {
+ public:
+  explicit Folder(const std::string& named) : keep_(!named.empty()) {
+    static std::atomic<int> counter{0};
+    path_ = keep_ ? fs::path(named)
+                  : fs::temp_directory_path() /
+                        ("cadnurbs-report-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
+    fs::create_directories(path_);
+  }
+  ~Folder() {
+    std::error_code ec;
+    if (!keep_) fs::remove_all(path_, ec);
+  }
+  fs::path file(const std::string& stem, const std::string& suffix) const { return path_ / (stem + suffix); }
+
+ private:
+  bool keep_;
+  fs::path path_;
+};
+
+// Size of the file and of its gzip'd form.
+void measure_bytes(const fs::path& path, RepresentationFigures& figures) {
+  const std::string bytes = read_file(path.string());
+  figures.bytes = static_cast<long>(bytes.size());
+  figures.gzip_bytes = is_gzip(bytes) ? figures.bytes : static_cast<long>(gzip(bytes).size());
+}
+
+// The mesh a mesh file holds, welded (shared vertices counted once, as an indexed mesh stores them).
+TriangleMesh read_back_mesh(const fs::path& path) { return weld_exact(scene_triangles(read_scene(path.string()))); }
+
+// Floats and integers of a mesh file as read back: every shape's own vertex list and its distinct normals
+// (an IndexedFaceSet stores each distinct normal once and indexes it per corner), or STL's soup.
+void count_mesh_file(const Scene& read_back, bool soup, RepresentationFigures& f) {
+  for_each_shape(read_back, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
+    const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry);
+    if (!mesh) return;
+    const long triangles = static_cast<long>(mesh->triangles.size());
+    if (soup) {
+      f.floats += 12 * triangles;
+      return;
+    }
+    std::set<std::array<double, 3>> normals;
+    for (const auto& n : mesh->corner_normals) normals.insert({n.x(), n.y(), n.z()});
+    f.floats += 3 * static_cast<long>(mesh->positions.size() + normals.size());
+    f.integers += (mesh->corner_normals.empty() ? 3 : 6) * triangles;
+  });
+}
+
+RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, const Scene& nurbs) {
+  RepresentationFigures f{file.key, file.label, RepresentationKind::mesh, 0, 0, 0, 0, 0, ""};
+  measure_bytes(path, f);
+  const Scene read_back = read_scene(path.string());
+  count_mesh_file(read_back, std::string(file.extension) == ".stl", f);
+  f.deviation = measure_deviation(scene_triangles(read_back), nurbs).overall.max;
+  f.deviation_basis = "measured after read-back (two-sided, sampled)";
+  return f;
+}
+
+void add_curve(PartRecord& record, const BrepTranslation& loaded, const Scene& scene, const Folder& folder,
+               const std::string& stem) {
+  SceneWriteOptions write_options;
+  for (double fraction : kCurveFractions) {
+    const double d = fraction * record.diagonal;
+    const CertifiedMesh meshed = certified_mesh(loaded, scene, d);
+    if (meshed.report.triangles > kCurveTriangleLimit) {
+      record.warnings.push_back("storage curve stops above D = " + std::to_string(d) + " " + record.unit + ": " +
+                                std::to_string(meshed.report.triangles) + " triangles");
+      break;
+    }
+    const fs::path path = folder.file(stem + "-curve", ".wrl");
+    write_scene(path.string(), meshed.meshes, write_options);
+    RepresentationFigures f;
+    measure_bytes(path, f);
+    const MeshStorage storage = mesh_storage(read_back_mesh(path));
+    record.curve.push_back({"wrl-mesh", d, f.bytes, f.gzip_bytes, storage.indexed_floats});
+  }
+  const RepresentationFigures* nurbs = smallest_representation(record, RepresentationKind::nurbs);
+  if (!nurbs) return;
+  const long nurbs_bytes = delivered_bytes(*nurbs);
+  std::vector<BytesAtDeviation> mesh;
+  for (const auto& p : record.curve) mesh.push_back({p.deviation, double(std::min(p.bytes, p.gzip_bytes))});  // as delivered
+  const Crossover crossing = storage_crossover(mesh, double(nurbs_bytes));
+  CrossoverFigure figure{"wrl-mesh", nurbs->key, nurbs_bytes};
+  if (crossing.deviation) figure.deviation = *crossing.deviation;
+  figure.mesh_larger_everywhere = crossing.mesh_larger_everywhere;
+  record.crossovers.push_back(figure);
+}
+
+PartRecord measure(const std::string& input, const PartMeasurementOptions& options, PartViews* views) {
+  PartRecord record;
+  record.input = input;
+  const BrepTranslation loaded = load_scene(input);
+  for (const auto& line : loaded.repairs) record.warnings.push_back(line);
+  for (const auto& f : loaded.fallbacks)
+    record.warnings.push_back(f.node + " face " + std::to_string(f.face_index) + " (" + f.surface_type +
+                              ") as a mesh: " + f.reason);
+  const Scene& scene = loaded.scene;
+  record.unit = scene.unit.name;
+  record.diagonal = scene_bounding_box(scene).diagonal().norm();
+  record.deviation = options.deviation_mm / scene.unit.millimetres;
+  if (!(record.deviation > 0) || !std::isfinite(record.deviation))
+    throw std::invalid_argument("the maximum deviation must be a positive number");
+  record.nurbs = nurbs_storage(scene);
+  const double tolerance = written_tolerance(scene, 0);
+  const Scene compact = compact_scene(scene, tolerance);
+  record.compact_nurbs = nurbs_storage(compact);
+
+  const Folder folder(options.files_folder);
+  const std::string stem = fs::path(input).stem().string();
+  SceneWriteOptions write_options;
+  write_options.title = fs::path(input).filename().string();
+  for (const auto& file : kNurbsFiles) {
+    const fs::path path = folder.file(stem + (file.compact ? "-compact" : "-exact"), file.extension);
+    write_scene(path.string(), file.compact ? compact : scene, write_options);
+    RepresentationFigures f{file.key, file.label, RepresentationKind::nurbs, 0, 0, 0, 0, 0, ""};
+    measure_bytes(path, f);
+    const NurbsStorage read_back = nurbs_storage(read_scene(path.string()));
+    f.floats = read_back.total_floats();
+    f.integers = read_back.polygon_corners;
+    f.deviation = file.compact ? tolerance : 0.5 * tolerance;
+    f.deviation_basis = file.compact ? "bound: nothing moved by more than the written precision"
+                                     : "bound: half the written precision (rounding)";
+    record.representations.push_back(f);
+  }
+
+  const CertifiedMesh meshed = certified_mesh(loaded, scene, record.deviation);
+  record.mesh_certified_deviation = meshed.report.certified_deviation;
+  if (meshed.report.uncertified_triangles > 0)
+    record.warnings.push_back(std::to_string(meshed.report.uncertified_triangles) +
+                              " triangles of the mesh at D could not be certified");
+  for (const auto& file : kMeshFiles) {
+    const fs::path path = folder.file(stem + "-mesh", file.extension);
+    write_scene(path.string(), meshed.meshes, write_options);
+    record.representations.push_back(mesh_figures(file, path, scene));
+  }
+  record.mesh = mesh_storage(read_back_mesh(folder.file(stem + "-mesh", ".wrl")));
+  if (views) {
+    views->nurbs_x3dv = read_file(folder.file(stem + "-compact", ".x3dv").string());
+    const fs::path mesh_view = folder.file(stem + "-mesh", ".x3dv");
+    write_scene(mesh_view.string(), meshed.meshes, write_options);
+    views->mesh_x3dv = read_file(mesh_view.string());
+  }
+  if (options.curve) add_curve(record, loaded, scene, folder, stem);
+  return record;
+}
+
+}  // namespace
+
+PartRecord measure_part(const std::string& input, const PartMeasurementOptions& options, PartViews* views) {
+  try {
+    return measure(input, options, views);
+  } catch (const std::exception& e) {
+    PartRecord failed;
+    failed.input = input;
+    failed.failed = true;
+    failed.error = e.what();
+    if (views) *views = {};
+    return failed;
+  }
+}
+
+}  // namespace cadnurbs

@@ -1,0 +1,25 @@
+#pragma once
+// The report's pipeline for one part: read it, write every representation the report compares into a
+// folder, read each file back, and measure it (analysis/report/storage_record.hpp). Every byte count is a
+// file's size on disk; every mesh deviation is measured on what reading the file back gives.
+#include <string>
+
+#include "analysis/report/report_html.hpp"
+#include "analysis/report/storage_record.hpp"
+
+namespace cadnurbs {
+
+struct PartMeasurementOptions {
+  double deviation_mm = 1.0;  // D, in millimetres (converted to the part's unit)
+  // Where the representations are written (created if missing; files named after the input). Empty: a
+  // temporary folder, removed afterwards.
+  std::string files_folder;
+  bool curve = false;         // also the storage-against-deviation curve (analysis of several D)
+};
+
+// The record of `input`. Never throws for a bad input: a file that cannot be read or measured gives a
+// record with failed = true and the one-line reason (the error of the stage that failed). `views` (may be
+// null): also the texts the HTML report draws, the compact X3D NURBS file and the mesh at D as X3D.
+PartRecord measure_part(const std::string& input, const PartMeasurementOptions& options, PartViews* views = nullptr);
+
+}  // namespace cadnurbs

@@ -1,0 +1,161 @@
+// `cadnurbs report` as a user runs it: the thesis's float counts checked against the written files,
+// bytes of files read back, every mesh's measured deviation within D, and a sphere whose mesh file is
+// many times its NURBS file (seed 000, Table 2: 66 KB against 7 KB).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <regex>
+
+#include "../analysis/analysis_shapes.hpp"
+#include "converters/file_formats.hpp"
+#include "formats/common/file_io.hpp"
+
+namespace fs = std::filesystem;
+using namespace cadnurbs;
+using Json = nlohmann::json;
+
+namespace {
+
+struct CommandResult {
+  int status;
+  std::string out, err;
+};
+
+class Report : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("cadnurbs_report_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  CommandResult run(const std::string& arguments) {
+    const std::string out = path("stdout.txt"), err = path("stderr.txt");
+    const int status = std::system((std::string(CADNURBS_EXE) + " " + arguments + " >" + out + " 2>" + err).c_str());
+    return {WEXITSTATUS(status), read_file(out), read_file(err)};
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+// The numbers between "FIELD [" and "]" of every occurrence of FIELD in `text`, one list per occurrence.
+std::vector<std::vector<double>> number_lists(const std::string& text, const std::string& field) {
+  std::vector<std::vector<double>> lists;
+  const std::regex pattern("\\b" + field + " \\[([^\\]]*)\\]");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), pattern); it != std::sregex_iterator(); ++it) {
+    std::vector<double> values;
+    std::istringstream in(std::regex_replace((*it)[1].str(), std::regex(","), " "));
+    for (double v; in >> v;) values.push_back(v);
+    lists.push_back(values);
+  }
+  return lists;
+}
+
+long count_of(const std::vector<std::vector<double>>& lists) {
+  long n = 0;
+  for (const auto& l : lists) n += static_cast<long>(l.size());
+  return n;
+}
+
+const Json& representation(const Json& part, const std::string& key) {
+  for (const auto& r : part["representations"])
+    if (r["key"] == key) return r;
+  throw std::runtime_error("no representation " + key);
+}
+
+}  // namespace
+
+TEST_F(Report, CappingFloatCountsAreThoseOfTheWrittenFiles) {
+  const std::string in = std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-90.x3dv";
+  const CommandResult r = run("report " + in + " --format json -o " + path("r.json") + " --files " + path("files"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json part = Json::parse(read_file(path("r.json")))["parts"][0];
+  ASSERT_EQ(part["status"], "ok");
+
+  // NURBS: 4 per control point + 1 per knot, counted here from the text of the exact .wrl.
+  const std::string exact = read_file(path("files/capping-90/capping-90-exact.wrl"));
+  ASSERT_FALSE(std::regex_search(exact, std::regex("(geometry|surface) USE")))
+      << "a shared geometry would make the text count differ from the scene's";
+  const long control_points = count_of(number_lists(exact, "controlPoint")) / 3;
+  const long knots = count_of(number_lists(exact, "uKnot")) + count_of(number_lists(exact, "vKnot"));
+  EXPECT_EQ(part["nurbs"]["control_points"].get<long>(), control_points);
+  EXPECT_EQ(part["nurbs"]["floats"].get<long>(), 4 * control_points + knots);
+  EXPECT_EQ(representation(part, "wrl-exact")["floats"].get<long>(), part["nurbs"]["total_floats"].get<long>());
+
+  // Mesh: the floats of the written IndexedFaceSets (coordinates and normals) and their indices.
+  const std::string mesh = read_file(path("files/capping-90/capping-90-mesh.wrl"));
+  const long floats = count_of(number_lists(mesh, "point")) + count_of(number_lists(mesh, "vector"));
+  long corners = 0;
+  for (const char* field : {"coordIndex", "normalIndex"})
+    for (const auto& list : number_lists(mesh, field))
+      for (double i : list) corners += i >= 0;
+  const Json& wrl_mesh = representation(part, "wrl-mesh");
+  EXPECT_EQ(wrl_mesh["floats"].get<long>(), floats);
+  EXPECT_EQ(wrl_mesh["integers"].get<long>(), corners);
+  EXPECT_EQ(part["mesh"]["triangles"].get<long>() * 3, corners / 2) << "every triangle's corners, indexed twice";
+  EXPECT_EQ(wrl_mesh["bytes"].get<long>(), static_cast<long>(mesh.size()));
+
+  // Every mesh figure within D = 1 mm, measured after read-back.
+  for (const auto& f : part["representations"])
+    if (f["kind"] == "mesh") {
+      ASSERT_FALSE(f["deviation"].is_null()) << f["key"];
+      EXPECT_LE(f["deviation"].get<double>(), 1.0) << f["key"];
+      EXPECT_GT(f["deviation"].get<double>(), 0.05) << f["key"] << ": a 1 mm mesh of a curved part deviates visibly";
+    }
+}
+
+TEST_F(Report, ASphereMeshWithinATenthOfAPercentIsNineTimesItsNurbsFile) {
+  Scene scene;
+  scene.root.name = "sphere";
+  scene.root.shapes.push_back(Shape{"sphere", test::sphere(10.0)});
+  write_scene(path("sphere.x3dv"), scene, SceneWriteOptions{});
+  const CommandResult r = run("report " + path("sphere.x3dv") + " --deviation 0.01 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json part = Json::parse(r.out)["parts"][0];
+  const Json& nurbs = representation(part, "wrl-compact");
+  const Json& mesh = representation(part, "wrl-mesh");
+  EXPECT_GE(mesh["bytes"].get<double>(), 9.0 * nurbs["bytes"].get<double>())
+      << "mesh " << mesh["bytes"] << " bytes, NURBS " << nurbs["bytes"];
+  EXPECT_LE(mesh["deviation"].get<double>(), 0.01);
+}
+
+TEST_F(Report, ABadInputIsListedAndTheOthersAreStillReported) {
+  write_file_atomically(path("broken.step"), "ISO-10303-21;\nHEADER;\nnot a step file");
+  const std::string good = std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-end.x3dv";
+  const CommandResult r = run("report " + path("broken.step") + " " + good + " --format csv -o " + path("r.csv"));
+  EXPECT_EQ(r.status, 3);
+  EXPECT_NE(r.err.find("broken.step"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("1 of 2 inputs failed"), std::string::npos) << r.err;
+  const std::string csv = read_file(path("r.csv"));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3) << csv;  // header + two parts
+  EXPECT_NE(csv.find(path("broken.step") + ",failed,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(good + ",ok,"), std::string::npos) << csv;
+}
+
+TEST_F(Report, MarkdownStatesTheAccountingAndThePapersFigures) {
+  const std::string in = std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-post.x3dv";
+  const CommandResult r = run("report " + in + " -o " + path("r.md"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string md = read_file(path("r.md"));
+  EXPECT_NE(md.find("seed 001, §6.1"), std::string::npos);
+  EXPECT_NE(md.find("2,468 floats"), std::string::npos);
+  EXPECT_NE(md.find("66 KB / 7 KB"), std::string::npos);
+  EXPECT_NE(md.find("| VRML97 IndexedFaceSet at D |"), std::string::npos);
+}
+
+TEST_F(Report, HtmlDrawsThePartFromTheFilesItWrote) {
+  const std::string in = std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-end.x3dv";
+  const CommandResult r = run("report " + in + " --files " + path("files") + " -o " + path("r.html"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string page = read_file(path("r.html"));
+  EXPECT_NE(page.find("<x3d-canvas"), std::string::npos);
+  // The NURBS view is the compact X3D file the report measured; embedded with '<' escaped.
+  const std::string nurbs = read_file(path("files/capping-end/capping-end-compact.x3dv"));
+  const std::string marker = "NurbsPatchSurface";
+  EXPECT_NE(nurbs.find(marker), std::string::npos);
+  EXPECT_NE(page.find(marker), std::string::npos) << "the NURBS scene text is in the page";
+  EXPECT_NE(page.find("IndexedFaceSet"), std::string::npos) << "the mesh scene text is in the page";
+}
