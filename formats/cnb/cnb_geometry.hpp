@@ -15,13 +15,15 @@ namespace cadnurbs::cnb {
 struct CodingState {
   int previous_edge = -1;
   KnotCache knots;
+  WeightCache weights;
   bool trim_extrapolation = true;  // writer only: whether faces may take the extrapolating trim predictor
 };
 
 // A surface's net on the grid of step q, predicted along rows (each point from the one before it, u
 // fastest) or across the net (parallelogram: P[i-1,j] + P[i,j-1] - P[i-1,j-1]), whichever leaves the
 // smaller residuals. Returns true when the parallelogram was taken.
-bool write_surface(ByteWriter& out, const NurbsSurface& surface, double q, CodingState& state);
+// Weights exact, or with `weight_log_step` > 0 quantised (write_weights' mode 2).
+bool write_surface(ByteWriter& out, const NurbsSurface& surface, double q, CodingState& state, double weight_log_step = 0);
 NurbsSurface read_surface(ByteReader& in, double q, CodingState& state);
 
 // Trimming loops on the grid 2^exponent in (u,v), predicted from the previous point along the loop (or,

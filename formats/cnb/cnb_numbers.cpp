@@ -134,8 +134,32 @@ std::vector<double> read_knots(ByteReader& in, size_t expected_count, KnotCache&
   return knots;
 }
 
-void write_weights(ByteWriter& out, const std::vector<double>& weights) {
+size_t distinct_count(const std::vector<double>& weights) {
+  std::vector<double> sorted = weights;
+  std::sort(sorted.begin(), sorted.end());
+  return static_cast<size_t>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+}
+
+void WeightCache::use(size_t index) { std::rotate(recent.begin(), recent.begin() + index, recent.begin() + index + 1); }
+
+void WeightCache::add(double value) {
+  recent.insert(recent.begin(), value);
+  if (recent.size() > capacity) recent.pop_back();
+}
+
+void write_weights(ByteWriter& out, const std::vector<double>& weights, WeightCache& cache, double log_step) {
   if (weights.empty()) { out.byte(0, Field::weight); return; }
+  if (log_step > 0) {
+    out.byte(2, Field::weight);
+    out.float64(log_step);
+    int64_t previous = 0;
+    for (double w : weights) {
+      const int64_t n = on_grid(std::log2(w), log_step);
+      out.varsint(n - previous, Field::weight);
+      previous = n;
+    }
+    return;
+  }
   out.byte(1, Field::weight);
   std::vector<double> table;
   std::vector<uint64_t> index;
@@ -147,24 +171,61 @@ void write_weights(ByteWriter& out, const std::vector<double>& weights) {
     index.push_back(i);
   }
   out.varuint(table.size(), Field::count);
-  for (double w : table) out.float64(w);
+  for (double w : table) {
+    const auto hit = std::find(cache.recent.begin(), cache.recent.end(), w);
+    if (hit == cache.recent.end()) {
+      out.varuint(0, Field::weight);
+      out.float64(w);
+      cache.add(w);
+    } else {
+      const size_t index = static_cast<size_t>(hit - cache.recent.begin());
+      out.varuint(index + 1, Field::weight);
+      cache.use(index);
+    }
+  }
   if (table.size() > 1)
     for (uint64_t i : index) out.varuint(i, Field::weight);
 }
 
-std::vector<double> read_weights(ByteReader& in, size_t point_count) {
+std::vector<double> read_weights(ByteReader& in, size_t point_count, WeightCache& cache) {
   const size_t mode_at = in.offset();
   const uint8_t mode = in.byte(Field::weight);
   if (mode == 0) return {};
+  if (mode == 2) {
+    const size_t step_at = in.offset();
+    const double step = in.float64();
+    if (!(step > 0 && step < 1)) in.fail("weight log step " + std::to_string(step) + " outside (0, 1)", step_at);
+    if (point_count > in.left()) in.fail(std::to_string(point_count) + " weights cannot fit in the " + std::to_string(in.left()) + " bytes left");
+    std::vector<double> weights(point_count);
+    int64_t n = 0;
+    for (auto& w : weights) {
+      const size_t at = in.offset();
+      const int64_t r = in.varsint(Field::weight);
+      if (std::abs(static_cast<double>(r)) > 0x1p52 || std::abs(static_cast<double>(n) + static_cast<double>(r)) > 0x1p52)
+        in.fail("weight exponent out of range", at);
+      n += r;
+      w = std::exp2(static_cast<double>(n) * step);
+      if (!(w > 0) || !std::isfinite(w)) in.fail("weight 2^(" + std::to_string(n) + " x " + std::to_string(step) + ") is not positive and finite", at);
+    }
+    return weights;
+  }
   if (mode != 1) in.fail("unknown weight mode " + std::to_string(mode), mode_at);
   const size_t start = in.offset();
-  const size_t t = in.count(8);
+  const size_t t = in.count(1);
   if (t == 0 || t > point_count) in.fail(std::to_string(t) + " distinct weights for " + std::to_string(point_count) + " points", start);
   std::vector<double> table(t);
   for (auto& w : table) {
     const size_t at = in.offset();
-    w = in.float64();
-    if (!(w > 0) || !std::isfinite(w)) in.fail("weight " + std::to_string(w) + " is not positive and finite", at);
+    const uint64_t place = in.varuint(Field::weight);
+    if (place == 0) {
+      w = in.float64();
+      if (!(w > 0) || !std::isfinite(w)) in.fail("weight " + std::to_string(w) + " is not positive and finite", at);
+      cache.add(w);
+    } else {
+      if (place > cache.recent.size()) in.fail("weight cache place " + std::to_string(place) + " beyond the " + std::to_string(cache.recent.size()) + " weights met", at);
+      w = cache.recent[place - 1];
+      cache.use(place - 1);
+    }
   }
   if (t == 1) return std::vector<double>(point_count, table[0]);
   if (point_count > in.left()) in.fail(std::to_string(point_count) + " weight indices cannot fit in the " + std::to_string(in.left()) + " bytes left");

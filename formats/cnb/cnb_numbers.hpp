@@ -29,11 +29,25 @@ void write_knots(ByteWriter& out, const std::vector<double>& knots, KnotCache& c
 // allocating it, values that are not increasing, and a cache place that holds no such vector.
 std::vector<double> read_knots(ByteReader& in, size_t expected_count, KnotCache& cache);
 
-// Mode 0 (polynomial) or 1 (table of distinct float64 values; an index per point when there are two or
-// more).
-void write_weights(ByteWriter& out, const std::vector<double>& weights);
-// `point_count` points; refuses a table larger than that, an index outside it, a weight <= 0.
-std::vector<double> read_weights(ByteReader& in, size_t point_count);
+// The distinct weight values met so far in a file, most recent first (cos(θ/2) values repeat from face
+// to face): a table entry met again is coded by its place here.
+struct WeightCache {
+  static constexpr size_t capacity = 64;
+  std::vector<double> recent;
+  void use(size_t index);
+  void add(double value);
+};
+
+// Mode 0 (polynomial) or 1 (table of distinct float64 values, each new or from the cache; an index per
+// point when there are two or more); with `log_step` > 0, mode 2: each weight as 2^(n·log_step), n predicted from the previous
+// point's (a relative error of at most 2^(log_step/2) - 1).
+void write_weights(ByteWriter& out, const std::vector<double>& weights, WeightCache& cache, double log_step = 0);
+// `point_count` points; refuses a table larger than that, an index outside it, a weight <= 0 or not
+// finite, a log step outside (0, 1).
+std::vector<double> read_weights(ByteReader& in, size_t point_count, WeightCache& cache);
+
+// How many different values `weights` holds.
+size_t distinct_count(const std::vector<double>& weights);
 
 // Orders and control point counts: refused above these before anything is allocated.
 constexpr uint64_t largest_order = 64;

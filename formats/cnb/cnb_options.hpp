@@ -17,13 +17,16 @@ struct CnbOptions {
 struct CnbWriteReport {
   double point_step = 0;   // q: the grid of control points and mesh vertices (scene units)
   double point_bound = 0;  // largest world move of a control point or vertex: q·√3/2·(largest world scale)
-  double trim_bound = 0;   // largest world move of a trimming boundary point caused by the trims' own grid
+  // Largest world move, over faces, caused by the trims' own grid plus (faces with quantised weights)
+  // the weights' rounding.
+  double trim_bound = 0;
   double deviation_bound() const { return point_bound + trim_bound; }
   size_t payload_bytes = 0;     // decoded payload
   size_t deflate_bytes = 0;     // the payload deflated (0 when not tried)
   size_t arithmetic_bytes = 0;  // the payload arithmetic-coded (0 when not tried)
   size_t file_bytes = 0;
   int parallelogram_nets = 0, row_nets = 0;  // which predictor each surface's net took
+  int quantised_weight_nets = 0;              // surfaces whose weights were rounded (not kept exactly)
   // Decoded payload bytes by what they hold: control point and vertex residuals, trim point residuals,
   // knots, weights (tables and indices), float64 values (transforms, header, raw knots, weight tables),
   // and the rest (structure, counts, names, indices).

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "formats/cnb/cnb_numbers.hpp"
+
 namespace cadnurbs::cnb {
 
 double transform_scale(const Eigen::Affine3d& transform) {
@@ -56,6 +58,31 @@ int trim_step_exponent(const NurbsSurface& surface, const CnbOptions& options, d
 
 double trim_bound(const NurbsSurface& surface, int exponent, double world_scale) {
   return 2.0 * surface_derivative_bound(surface) * std::ldexp(1.0, exponent) * world_scale;
+}
+
+namespace {
+double net_diagonal(const NurbsSurface& s) {
+  Eigen::AlignedBox3d box;
+  for (const auto& p : s.points) box.extend(p);
+  return box.diagonal().norm();
+}
+}  // namespace
+
+bool quantises_weights(const NurbsSurface& surface) {
+  return surface.is_rational() && distinct_count(surface.weights) > exact_weight_limit;
+}
+
+double weight_log_step(const NurbsSurface& surface, double budget, double world_scale) {
+  const double reach = net_diagonal(surface) * world_scale;
+  if (!(reach > 0)) return 0.5;  // all control points equal: the weights cannot move the surface
+  // ε/(1-ε)·reach = budget  <=>  ε = budget / (reach + budget); h = 2·log2(1 + ε), a little less for rounding.
+  const double epsilon = budget / (reach + budget);
+  return std::min(0.5, 0.999 * 2.0 * std::log2(1.0 + epsilon));
+}
+
+double weight_bound(const NurbsSurface& surface, double log_step, double world_scale) {
+  const double epsilon = std::exp2(log_step / 2.0) - 1.0;
+  return epsilon / (1.0 - epsilon) * net_diagonal(surface) * world_scale;
 }
 
 }  // namespace cadnurbs::cnb

@@ -33,6 +33,18 @@ int trim_step_exponent(const NurbsSurface& surface, const CnbOptions& options, d
 // The world bound 2·L·2^e·scale of that choice.
 double trim_bound(const NurbsSurface& surface, int exponent, double world_scale);
 
+// Weights: kept exactly, except on a rational surface with more than `exact_weight_limit` distinct
+// weights (a table would cost 8 bytes each). There each weight is rounded to 2^(n·h), a relative error
+// of at most ε = 2^(h/2) - 1. With the control points fixed, S' - S = Σ N_i (w'_i - w_i)(P_i - S) /
+// Σ N_i w'_i, so |S' - S| <= ε/(1 - ε) · max |P_i - S| <= ε/(1 - ε) · (diagonal of the net's box); the
+// moved points add their own bound on top (convex hull, as above). Such a face gives half its trim share
+// to the weights and half to its trims.
+constexpr size_t exact_weight_limit = 4;
+bool quantises_weights(const NurbsSurface& surface);
+// h for a world budget `budget`, and the world bound ε/(1 - ε)·diagonal·scale that h gives.
+double weight_log_step(const NurbsSurface& surface, double budget, double world_scale);
+double weight_bound(const NurbsSurface& surface, double log_step, double world_scale);
+
 // Largest singular value of a transform's linear part.
 double transform_scale(const Eigen::Affine3d& transform);
 

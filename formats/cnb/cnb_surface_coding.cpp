@@ -73,14 +73,14 @@ Cell read_residual_added(ByteReader& in, const Cell& prediction) {
 
 }  // namespace
 
-bool write_surface(ByteWriter& out, const NurbsSurface& s, double q, CodingState& state) {
+bool write_surface(ByteWriter& out, const NurbsSurface& s, double q, CodingState& state, double weight_log_step) {
   out.varuint(s.u_order, Field::count);
   out.varuint(s.v_order, Field::count);
   out.varuint(s.u_count, Field::count);
   out.varuint(s.v_count, Field::count);
   write_knots(out, s.u_knots, state.knots);
   write_knots(out, s.v_knots, state.knots);
-  write_weights(out, s.weights);
+  write_weights(out, s.weights, state.weights, weight_log_step);
   std::vector<Cell> net;
   net.reserve(s.points.size());
   for (const auto& p : s.points) net.push_back(cell(p, q));
@@ -113,7 +113,7 @@ NurbsSurface read_surface(ByteReader& in, double q, CodingState& state) {
   s.u_knots = read_knots(in, u_count + s.u_order, state.knots);
   s.v_knots = read_knots(in, v_count + s.v_order, state.knots);
   const size_t n = u_count * v_count;
-  s.weights = read_weights(in, n);
+  s.weights = read_weights(in, n, state.weights);
   const size_t predictor_at = in.offset();
   const uint8_t predictor = in.byte(Field::structure);
   if (predictor > parallelogram) in.fail("unknown predictor " + std::to_string(predictor), predictor_at);
@@ -131,7 +131,7 @@ void write_curve(ByteWriter& out, const NurbsCurve& curve, double q, CodingState
   out.varuint(curve.order, Field::count);
   out.varuint(curve.points.size(), Field::count);
   write_knots(out, curve.knots, state.knots);
-  write_weights(out, curve.weights);
+  write_weights(out, curve.weights, state.weights);
   Cell previous{0, 0, 0};
   for (const auto& p : curve.points) {
     const Cell c = cell(p, q);
@@ -146,7 +146,7 @@ NurbsCurve read_curve(ByteReader& in, double q, CodingState& state) {
   curve.order = static_cast<int>(read_order(in));
   const uint64_t n = read_point_count(in, 3);
   curve.knots = read_knots(in, n + curve.order, state.knots);
-  curve.weights = read_weights(in, n);
+  curve.weights = read_weights(in, n, state.weights);
   if (n > in.left() / 3) in.fail(std::to_string(n) + " control points cannot fit in the " + std::to_string(in.left()) + " bytes left");
   Cell previous{0, 0, 0};
   curve.points.reserve(n);

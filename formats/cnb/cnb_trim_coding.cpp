@@ -134,7 +134,7 @@ void write_trim_loops(ByteWriter& out, const std::vector<TrimLoop>& loops, int e
         out.varuint(curve->order, Field::count);
         out.varuint(curve->points.size(), Field::count);
         write_knots(out, curve->knots, state.knots);
-        write_weights(out, curve->weights);
+        write_weights(out, curve->weights, state.weights);
       } else {
         out.varuint(cells[s].size(), Field::count);
       }
@@ -185,7 +185,7 @@ std::vector<TrimLoop> read_trim_loops(ByteReader& in, int exponent, CodingState&
         const size_t n = in.count(2);
         if (n < 1) in.fail("a trimming curve without control points", n_at);
         c.knots = read_knots(in, n + order, state.knots);
-        c.weights = read_weights(in, n);
+        c.weights = read_weights(in, n, state.weights);
         for (const auto& p : read_cells(in, n, step, prediction)) c.points.emplace_back(p.x(), p.y(), 0.0);
         loop.segments.emplace_back(std::move(c));
       } else {

@@ -34,12 +34,22 @@ struct SceneEncoder {
   // The geometry record; with `counted`, the predictor choice goes into the report.
   void geometry(ByteWriter& w, const Geometry& g, double world_scale, CodingState& st, bool counted) {
     if (const auto* t = std::get_if<TrimmedSurface>(&g)) {
-      const bool parallelogram = write_surface(w, t->surface, q, st);
+      // A face that quantises its weights gives them half of its trim share.
+      CnbOptions face_options = options;
+      double log_step = 0, weights_bound = 0;
+      if (quantises_weights(t->surface)) {
+        face_options.trim_share = options.trim_share / 2;
+        log_step = weight_log_step(t->surface, face_options.trim_share * options.max_deviation, world_scale);
+        weights_bound = weight_bound(t->surface, log_step, world_scale);
+      }
+      const bool parallelogram = write_surface(w, t->surface, q, st, log_step);
       if (counted) ++(parallelogram ? report.parallelogram_nets : report.row_nets);
-      const int e = trim_step_exponent(t->surface, options, world_scale);
+      if (counted && log_step > 0) ++report.quantised_weight_nets;
+      const int e = trim_step_exponent(t->surface, face_options, world_scale);
       w.varsint(e, Field::structure);
       write_trim_loops(w, t->loops, e, st);
-      if (!t->loops.empty()) report.trim_bound = std::max(report.trim_bound, trim_bound(t->surface, e, world_scale));
+      const double trims = t->loops.empty() ? 0.0 : trim_bound(t->surface, e, world_scale);
+      report.trim_bound = std::max(report.trim_bound, trims + weights_bound);
     } else if (const auto* c = std::get_if<NurbsCurve>(&g)) {
       write_curve(w, *c, q, st);
     } else if (const auto* m = std::get_if<TriangleMesh>(&g)) {

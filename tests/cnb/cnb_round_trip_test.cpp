@@ -107,6 +107,40 @@ TEST(CnbCorpus, StepPartRoundTripWithinDeviation) {
   for (double d : {1.0, 0.01}) expect_round_trip(scene, d, "dm1-id-214.stp");
 }
 
+// A second corpus part, with rational B-spline and planar faces.
+TEST(CnbCorpus, RationalPartRoundTripWithinDeviation) {
+  const Scene scene = read_step(std::string(CADNURBS_SHARED_DIR) + "/corpus/step/io1-tu-203.stp").scene;
+  for (double d : {1.0, 0.01}) expect_round_trip(scene, d, "io1-tu-203.stp");
+}
+
+// A rational surface with many distinct weights (a fitted or deformed one): its weights are rounded on
+// a logarithmic grid, and the surface stays within the bound that allows for it.
+TEST(CnbRoundTrip, ManyDistinctWeightsRoundedWithinDeviation) {
+  NurbsSurface s;
+  s.u_order = s.v_order = 3;
+  s.u_count = s.v_count = 6;
+  s.u_knots = s.v_knots = {0, 0, 0, 1, 2, 3, 4, 4, 4};
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) {
+      s.points.emplace_back(20.0 * i, 20.0 * j, 15.0 * std::sin(i + 0.7 * j));
+      s.weights.push_back(0.5 + 0.25 * (1 + std::sin(3.1 * i + 1.3 * j)));
+    }
+  Scene scene;
+  scene.root.shapes.push_back({"warped", TrimmedSurface{s, {domain_loop(s)}}, std::nullopt});
+  for (double d : {1.0, 0.01}) {
+    const RoundTrip r = round_trip(scene, d);
+    EXPECT_EQ(r.report.quantised_weight_nets, 1);
+    const auto& back = std::get<TrimmedSurface>(r.decoded.root.shapes[0].geometry).surface;
+    double largest_change = 0;
+    for (size_t i = 0; i < s.weights.size(); ++i)
+      largest_change = std::max(largest_change, std::abs(back.weights[i] / s.weights[i] - 1));
+    EXPECT_GT(largest_change, 0.0);
+    EXPECT_LE(r.measured.max(), r.report.deviation_bound());
+    EXPECT_LE(r.report.deviation_bound(), d);
+    EXPECT_GT(r.measured.surfaces, 0.1 * d);
+  }
+}
+
 TEST(CnbCorpus, BothEntropyCodersDecodeToTheSameScene) {
   const Scene& scene = corpus_scene();
   const RoundTrip a = round_trip(scene, 0.01, CnbOptions::Coder::deflate);
