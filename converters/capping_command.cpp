@@ -18,7 +18,7 @@ std::string help() {
     "usage: cadnurbs capping --shape NAME -o OUT [options]\n"
     "Generates a stair capping (seed 001, ch. 4): the handrail profile swept along a path as one\n"
     "exact rational quadratic NURBS, the handrail connections closed by trimmed planar lids.\n"
-    "  --shape NAME             capping-90, capping-end, capping-post, or 'all'\n"
+    "  --shape NAME             capping-90, capping-end, capping-post, capping-moulded, or 'all'\n"
     "  -o OUT                   a file (" + extension_list(false) + ")\n"
     "                           or, with a trailing '/' or an existing directory, a folder that\n"
     "                           gets NAME with each of" + set + "\n"

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "analysis/measure_deviation.hpp"
+#include "analysis/mesh_encoding.hpp"
 #include "analysis/report/storage_crossover.hpp"
 #include "analysis/scene_triangles.hpp"
 #include "analysis/weld_exact.hpp"
@@ -17,6 +18,8 @@
 #include "core/bounding_box.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/common/gzip.hpp"
+#include "formats/draco/draco_mesh_codec.hpp"
+#include "formats/meshopt/meshopt_mesh_codec.hpp"
 
 namespace cadnurbs {
 
@@ -47,6 +50,20 @@ struct MeshFile {
 constexpr MeshFile kMeshFiles[] = {
     {"wrl-mesh", "VRML97 IndexedFaceSet at D", ".wrl"},
     {"stl-mesh", "binary STL at D", ".stl"},
+};
+
+// The compressed meshes: the smallest encoding within D (analysis/mesh_encoding), written as the codec's
+// own file.
+struct EncodedMeshFile {
+  MeshCodec codec;
+  const char* key;
+  const char* label;
+  const char* extension;
+  TriangleMesh (*decode)(const std::string& bytes, const std::string& name);
+};
+const EncodedMeshFile kEncodedMeshFiles[] = {
+    {MeshCodec::draco, "draco", "Draco, coarsest quantisation within D", ".drc", decode_draco_mesh},
+    {MeshCodec::meshopt, "meshopt", "meshoptimizer codecs (gltfpack's way) within D", ".meshopt", decode_meshopt_mesh},
 };
 
 // The D values of the storage-against-accuracy curve, as fractions of the bounding-box diagonal.
@@ -111,6 +128,37 @@ RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, c
   f.deviation = measure_deviation(scene_triangles(read_back), nurbs).overall.max;
   f.deviation_basis = "measured after read-back (two-sided, sampled)";
   return f;
+}
+
+// Draco and meshoptimizer files of the mesh within D, read back and decoded; the deviation is measured
+// on the decoded mesh (encode_mesh_within). A scene the encoder refuses (faces that fell back to meshes
+// have nothing exact to be measured against) gets a warning instead.
+void add_encoded_meshes(PartRecord& record, const Scene& faces, const Folder& folder, const std::string& stem) {
+  std::vector<MeshCodec> codecs;
+  for (const auto& file : kEncodedMeshFiles) codecs.push_back(file.codec);
+  std::vector<MeshEncodingFigures> encoded;
+  try {
+    encoded = encode_mesh_within(faces, record.deviation, codecs);
+  } catch (const std::exception& e) {
+    record.warnings.push_back(std::string("compressed meshes not measured: ") + e.what());
+    return;
+  }
+  for (std::size_t i = 0; i < encoded.size(); ++i) {
+    const EncodedMeshFile& file = kEncodedMeshFiles[i];
+    const fs::path path = folder.file(stem + "-mesh", file.extension);
+    write_file_atomically(path.string(), encoded[i].bytes);
+    RepresentationFigures f{file.key, file.label, RepresentationKind::mesh, 0, 0, 0, 0, 0, ""};
+    measure_bytes(path, f);
+    const TriangleMesh decoded = file.decode(read_file(path.string()), path.string());
+    const MeshStorage storage = mesh_storage(decoded);
+    f.floats = storage.indexed_floats;
+    f.integers = storage.indexed_integers;
+    f.deviation = encoded[i].measured.overall.max;
+    f.deviation_basis = "measured after decoding (two-sided, sampled); bound " +
+                        std::to_string(encoded[i].deviation_bound) + " (" + std::to_string(encoded[i].position_bits) +
+                        " bits)";
+    record.representations.push_back(f);
+  }
 }
 
 void add_curve(PartRecord& record, const BrepTranslation& loaded, const Scene& scene, const Folder& folder,
@@ -191,6 +239,7 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
     record.representations.push_back(mesh_figures(file, path, scene));
   }
   record.mesh = mesh_storage(read_back_mesh(folder.file(stem + "-mesh", ".wrl")));
+  add_encoded_meshes(record, meshed.sewn ? meshed.faces : scene, folder, stem);
   if (views) {
     views->nurbs_x3dv = read_file(folder.file(stem + "-compact", ".x3dv").string());
     const fs::path mesh_view = folder.file(stem + "-mesh", ".x3dv");

@@ -20,12 +20,12 @@ CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, 
   CertifiedMesh result;
   const SceneCounts counts = count_entities(scene);
   result.sewn = loaded.face_count == 0 && counts.surfaces + counts.polygon_meshes > 0;
-  Scene faces;
   if (result.sewn) {
     result.sewing_tolerance = sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), max_deviation);
-    faces = sew_faces(scene, result.sewing_tolerance, &result.sewing);
+    result.faces = sew_faces(scene, result.sewing_tolerance, &result.sewing);
   }
-  result.meshes = tessellate_to_deviation(result.sewn ? faces : scene, max_deviation, &result.report, check_face_areas);
+  result.meshes =
+      tessellate_to_deviation(result.sewn ? result.faces : scene, max_deviation, &result.report, check_face_areas);
   return result;
 }
 

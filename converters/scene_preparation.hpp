@@ -18,6 +18,7 @@ struct CertifiedMesh {
   Scene meshes;                 // one TriangleMesh shape per face; tree, names and colours kept
   TessellationReport report;
   bool sewn = false;            // the scene named no edges, so it was sewn first
+  Scene faces;                  // what was tessellated when sewn: the sewn faces, with shared-edge ids
   SewingTolerance sewing_tolerance;
   SewingReport sewing;
 };

@@ -98,6 +98,9 @@ TEST_F(Report, CappingFloatCountsAreThoseOfTheWrittenFiles) {
   EXPECT_EQ(part["mesh"]["triangles"].get<long>() * 3, corners / 2) << "every triangle's corners, indexed twice";
   EXPECT_EQ(wrl_mesh["bytes"].get<long>(), static_cast<long>(mesh.size()));
 
+  // The compressed meshes were written, decoded and measured too.
+  EXPECT_LT(representation(part, "draco")["bytes"].get<long>(), wrl_mesh["gzip_bytes"].get<long>());
+  EXPECT_LT(representation(part, "meshopt")["gzip_bytes"].get<long>(), wrl_mesh["gzip_bytes"].get<long>());
   // Every mesh figure within D = 1 mm, measured after read-back.
   for (const auto& f : part["representations"])
     if (f["kind"] == "mesh") {
