@@ -33,26 +33,55 @@ int span_count(const TrimLoop& loop) {
   return spans;
 }
 
-// Each NURBS span sampled `per_span` times, polylines as they are.
-LoopPolygon loop_chords(const TrimLoop& loop, int per_span) {
+// Parameters in (0, 1) where the straight piece a -> b crosses one of the surface's inner knot lines.
+std::vector<double> knot_line_crossings(const NurbsSurface& s, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  std::vector<double> out;
+  auto cross = [&](const std::vector<double>& knots, int order, int count, int axis) {
+    for (int i = order; i < count; ++i)
+      if (knots[i] > knots[i - 1] && (knots[i] - a[axis]) * (knots[i] - b[axis]) < 0)
+        out.push_back((knots[i] - a[axis]) / (b[axis] - a[axis]));
+  };
+  cross(s.u_knots, s.u_order, s.u_count, 0);
+  cross(s.v_knots, s.v_order, s.v_count, 1);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Each NURBS span sampled `per_span` times, polylines as they are. Straight pieces (polylines, polynomial
+// order-2 curves) are also split where they cross a knot line of the surface: a boundary triangle that
+// straddled one would integrate across the kink of |Su x Sv| there.
+LoopPolygon loop_chords(const TrimLoop& loop, int per_span, const NurbsSurface& surface) {
   LoopPolygon out;
+  auto add_straight = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const NurbsCurve* curve, double t0, double t1) {
+    double from = 0;
+    for (double s : knot_line_crossings(surface, a, b)) {
+      out.points.push_back(a + from * (b - a));
+      out.chords.push_back({curve, t0 + from * (t1 - t0), t0 + s * (t1 - t0)});
+      from = s;
+    }
+    out.points.push_back(a + from * (b - a));
+    out.chords.push_back({curve, t0 + from * (t1 - t0), t1});
+  };
   for (const auto& segment : loop.segments) {
     if (const auto* c = std::get_if<NurbsCurve>(&segment)) {
+      const bool straight = c->order == 2 && !c->is_rational();
       for (int i = c->order - 1; i < c->count(); ++i) {
         const double a = c->knots[i], b = c->knots[i + 1];
         if (!(a < b)) continue;
         for (int s = 0; s < per_span; ++s) {
           const double t0 = a + (b - a) * s / per_span, t1 = a + (b - a) * (s + 1) / per_span;
-          out.points.push_back(curve_point(*c, t0).head<2>());
-          out.chords.push_back({c, t0, t1});
+          const Eigen::Vector2d p0 = curve_point(*c, t0).head<2>();
+          if (straight) {
+            add_straight(p0, curve_point(*c, t1).head<2>(), c, t0, t1);
+          } else {
+            out.points.push_back(p0);
+            out.chords.push_back({c, t0, t1});
+          }
         }
       }
     } else {
       const auto& pts = std::get<Polyline2D>(segment).points;
-      for (size_t i = 0; i + 1 < pts.size(); ++i) {
-        out.points.push_back(pts[i]);
-        out.chords.push_back({});
-      }
+      for (size_t i = 0; i + 1 < pts.size(); ++i) add_straight(pts[i], pts[i + 1], nullptr, 0, 0);
     }
   }
   return out;
@@ -101,7 +130,7 @@ std::vector<LoopPolygon> domain_polygons(const TrimmedSurface& t) {
   int spans = 0;
   for (const auto& loop : t.loops) spans += span_count(loop);
   const int per_span = std::clamp(1000 / std::max(spans, 1), 4, 32);
-  for (const auto& loop : t.loops) out.push_back(loop_chords(loop, per_span));
+  for (const auto& loop : t.loops) out.push_back(loop_chords(loop, per_span, t.surface));
   return out;
 }
 
