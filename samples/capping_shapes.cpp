@@ -14,6 +14,8 @@ constexpr BundledShape kShapes[] = {
     {"capping-90", "capping-90-path.txt", "handrail-profile.txt"},
     {"capping-end", "capping-end-path.txt", "handrail-profile.txt"},
     {"capping-post", "capping-post-path.txt", "post-profile.txt"},
+    // The 90-degree corner with a moulded rail, a part as detailed as the thesis's (seed 001, 6.1).
+    {"capping-moulded", "capping-90-path.txt", "moulded-profile.txt"},
 };
 }  // namespace
 

@@ -146,6 +146,44 @@ TEST(CappingCounts, NinetyDegreeCappingHasTheExpectedNet) {
   EXPECT_EQ(counts.control_points, 21 * 7 + 4 + 4);
 }
 
+// The thesis's 90-degree capping (seed 001, 6.1): 591 control points, 104 knots, 4 x 591 + 104 = 2,468
+// floats. Counted here from the nets themselves, the way the thesis counts (x, y, z, w per point).
+TEST(CappingCounts, MouldedCappingIsAsDetailedAsTheThesisCapping) {
+  const auto thesis_floats = [](const Scene& scene, long& points, long& knots) {
+    points = knots = 0;
+    for (const auto& s : scene.root.shapes) {
+      const NurbsSurface& n = std::get<TrimmedSurface>(s.geometry).surface;
+      points += static_cast<long>(n.u_count) * n.v_count;
+      knots += static_cast<long>(n.u_knots.size() + n.v_knots.size());
+    }
+    return 4 * points + knots;
+  };
+  const CappingDefinition moulded = bundled_capping("capping-moulded");
+  int arcs = 0;
+  for (const auto& s : moulded.half_profile.segments) arcs += s.is_arc;
+  EXPECT_EQ(moulded.half_profile.segments.size(), 17u);
+  EXPECT_EQ(arcs, 9);
+  // Half profile: 8 lines, 8 arcs of at most 90 degrees and the 180-degree bead groove in two
+  // pieces = 18 pieces; the whole profile 36 pieces -> 1 + 2 x 36 = 73 points; the path 7.
+  const Scene scene = capping_nurbs(moulded);
+  const NurbsSurface& body = shape_named(scene, "body").surface;
+  EXPECT_EQ(body.u_count, 73);
+  EXPECT_EQ(body.v_count, 7);
+  long points = 0, knots = 0, points_90 = 0, knots_90 = 0;
+  const long floats = thesis_floats(scene, points, knots);
+  const long floats_90 = thesis_floats(capping_nurbs(bundled_capping("capping-90")), points_90, knots_90);
+  // 73 x 7 + two 2 x 2 lids = 519 points; knots (73 + 3) + (7 + 3) + 2 x 8 = 102.
+  EXPECT_EQ(points, 519);
+  EXPECT_EQ(knots, 102);
+  EXPECT_EQ(floats, 2178);
+  EXPECT_EQ(floats_90, 670);
+  EXPECT_GE(floats, 3 * floats_90);
+  // count_entities (what demo and report print) counts the same.
+  const SceneCounts c = count_entities(scene);
+  EXPECT_EQ(c.control_points, points);
+  EXPECT_EQ(c.knots, knots);
+}
+
 TEST(CappingErrors, HalfProfileMustStartOnTheAxis) {
   try {
     parse_capping("x", "start 0 0\nline 10 0\n", "p.txt", "start 1 10\nline 5 0\nline 0 0\n", "prof.txt");

@@ -5,7 +5,7 @@
 set -euo pipefail
 cadnurbs=$1 samples=$2 out=$3
 mkdir -p "$out"
-for shape in capping-90 capping-end capping-post; do
+for shape in capping-90 capping-end capping-post capping-moulded; do
   "$cadnurbs" convert "$samples/$shape.x3dv" -o "$out/$shape-mesh.x3dv" --steps 16
   "$cadnurbs" convert "$samples/$shape.wrl" -o "$out/$shape-mesh.wrl" --steps 16
   "$cadnurbs" capping --shape "$shape" --without-lids -o "$out/$shape-body.x3dv"
