@@ -9,6 +9,7 @@
 #include "converters/scene_preparation.hpp"
 #include "core/bounding_box.hpp"
 #include "core/length_unit.hpp"
+#include "formats/common/file_io.hpp"
 
 namespace cadnurbs {
 
@@ -43,9 +44,18 @@ std::string help() {
          "  --euclidean         write/read control points as Euclidean points with separate weights\n"
          "                      (default: homogeneous w*P, the convention of current viewers)\n"
          "  --self-contained    VRML97: paste the NURBS PROTO implementations into the file\n"
+         "  .cnb (cadnurbs compact binary NURBS, docs/cnb.md): --deviation D is its bound (default 0.001 x\n"
+         "                      the diagonal): control points and trims quantised so that no decoded point\n"
+         "                      moves by more than D\n"
+         "  --compress C        .glb: draco (default), meshopt or none. .glb and .drc quantise positions: the\n"
+         "                      mesh is made within 0.7 D and the coarsest grid that moves no vertex by more\n"
+         "                      than 0.3 D is taken, so the decoded mesh stays within D (metres, +Y up in .glb)\n"
          "A STEP/IGES face that cannot be written as a trimmed NURBS is written as a mesh instead;\n"
          "convert lists each such face and says how many there were.\n";
 }
+
+// The share of D a quantising format's mesh is tessellated to (the rest is the quantisation's).
+constexpr double kTessellationShare = 0.7;
 
 void print_compaction(const std::string& out, const CompactReport& r) {
   std::cout << out << ": compact: " << r.planar_faces << " planar faces as exact polygons in " << r.polygon_meshes
@@ -58,7 +68,7 @@ void print_compaction(const std::string& out, const CompactReport& r) {
 }  // namespace
 
 int run_convert(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("convert", args, {"output", "steps", "precision", "deviation", "display-deviation", "units"},
+  const Arguments a = parse_arguments("convert", args, {"output", "steps", "precision", "deviation", "display-deviation", "units", "compress"},
                                       {"mesh", "euclidean", "self-contained", "exact-nurbs", "pretty", "check-areas", "help"});
   if (a.has("help")) {
     std::cout << help();
@@ -99,11 +109,19 @@ int run_convert(const std::vector<std::string>& args) {
   options.self_contained = a.has("self-contained");
   options.pretty = a.has("pretty");
   options.title = std::filesystem::path(in).filename().string();
+  if (a.has("compress")) {
+    if (file_extension(out) != ".glb") throw UsageError("--compress applies to .glb output only");
+    options.compression = a.value("compress");
+  }
   const auto box = scene_bounding_box(scene);
   // The mesh keeps the NURBS file's Viewpoint so that both render from the same place.
   options.viewpoint = framing_viewpoint(box);
   options.display_deviation = display_deviation >= 0 ? display_deviation : 1e-3 * box.diagonal().norm();
-  const bool mesh = a.has("mesh") || a.has("steps") || a.has("deviation") || format.meshes_only;
+  // --deviation asks for a mesh, except for a NURBS format that quantises (.cnb): there it is its bound.
+  const bool nurbs_within_deviation = format.quantises && !format.meshes_only;
+  const bool mesh = a.has("mesh") || a.has("steps") || (a.has("deviation") && !nurbs_within_deviation) ||
+                    format.meshes_only;
+  if (nurbs_within_deviation) options.quantisation_budget = deviation > 0 ? deviation : 1e-3 * box.diagonal().norm();
   Scene written;
   std::string how;
   if (mesh && steps > 0) {
@@ -112,7 +130,10 @@ int run_convert(const std::vector<std::string>& args) {
   } else if (mesh) {
     const double d = deviation > 0 ? deviation : 1e-3 * box.diagonal().norm();
     const bool check_areas = a.has("check-areas");
-    CertifiedMesh meshed = certified_mesh(loaded, scene, d, check_areas);
+    // A quantising writer gets its share of D: the mesh at 0.7 D, vertices moved by at most 0.3 D.
+    const double tessellated = format.quantises ? kTessellationShare * d : d;
+    if (format.quantises) options.quantisation_budget = d - tessellated;
+    CertifiedMesh meshed = certified_mesh(loaded, scene, tessellated, check_areas);
     if (meshed.sewn) {
       const SewingReport& sewing = meshed.sewing;
       std::cout << in << ": sewn at " << meshed.sewing_tolerance.first << " " << scene.unit.name << " (gaps up to "
@@ -122,7 +143,11 @@ int run_convert(const std::vector<std::string>& args) {
     }
     const TessellationReport& report = meshed.report;
     written = std::move(meshed.meshes);
-    how = ", max deviation " + std::to_string(d) + " " + scene.unit.name + "; certified " +
+    how = ", max deviation " + std::to_string(d) + " " + scene.unit.name +
+          (format.quantises ? " (mesh within " + std::to_string(tessellated) + ", positions quantised within " +
+                                  std::to_string(options.quantisation_budget) + ")"
+                            : std::string()) +
+          "; certified " +
           std::to_string(report.certified_deviation) + ", " + std::to_string(report.uncertified_triangles) +
           " uncertified triangles, " + std::to_string(report.unshared_edge_uses) + " unshared edge uses" +
           (check_areas ? ", " + std::to_string(report.faces_beyond_area_allowance) + " faces beyond their area allowance"

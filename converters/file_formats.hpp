@@ -21,6 +21,10 @@ struct SceneWriteOptions {
   double display_deviation = 0.0;
   std::optional<Viewpoint> viewpoint;
   std::string title;
+  // Formats that quantise positions (.glb, .drc): how far a decoded vertex may move (model units); the
+  // writer takes the coarsest quantisation within it. 0: the writer's default resolution.
+  double quantisation_budget = 0.0;
+  std::string compression = "draco";  // .glb: none, draco or meshopt (--compress)
 };
 
 struct FileFormat {
@@ -33,6 +37,7 @@ struct FileFormat {
   // readers' account of fallen-back faces included); writers write atomically.
   BrepTranslation (*read)(const std::string& path, bool homogeneous_control_points) = nullptr;
   void (*write)(const std::string& path, const Scene& scene, const SceneWriteOptions& options) = nullptr;
+  bool quantises = false;  // its writer moves positions (SceneWriteOptions::quantisation_budget)
 };
 
 // Every format, inputs and outputs.

@@ -10,6 +10,7 @@
 
 #include "analysis/measure_deviation.hpp"
 #include "analysis/mesh_encoding.hpp"
+#include "analysis/paired_scene_deviation.hpp"
 #include "analysis/report/storage_crossover.hpp"
 #include "analysis/scene_triangles.hpp"
 #include "analysis/weld_exact.hpp"
@@ -18,6 +19,8 @@
 #include "core/bounding_box.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/common/gzip.hpp"
+#include "formats/cnb/cnb_reader.hpp"
+#include "formats/cnb/cnb_writer.hpp"
 #include "formats/draco/draco_mesh_codec.hpp"
 #include "formats/meshopt/meshopt_mesh_codec.hpp"
 
@@ -130,6 +133,25 @@ RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, c
   return f;
 }
 
+// Our binary NURBS (.cnb) of the compact form within D, read back; the deviation is measured by sampling
+// both scenes at the same parameters (analysis/paired_scene_deviation).
+void add_compact_binary(PartRecord& record, const Scene& compact, const Folder& folder, const std::string& stem) {
+  const fs::path path = folder.file(stem + "-compact", ".cnb");
+  CnbOptions options;
+  options.max_deviation = record.deviation;
+  CnbWriteReport written;
+  write_file_atomically(path.string(), write_cnb(compact, options, &written));
+  RepresentationFigures f{"cnb", "cadnurbs binary NURBS (.cnb) within D", RepresentationKind::nurbs, 0, 0, 0, 0, 0, ""};
+  measure_bytes(path, f);
+  const Scene decoded = read_cnb(read_file(path.string()), path.string());
+  const NurbsStorage storage = nurbs_storage(decoded);
+  f.floats = storage.total_floats();
+  f.integers = storage.polygon_corners;
+  f.deviation = paired_scene_deviation(compact, decoded).max();
+  f.deviation_basis = "measured after decoding (both scenes sampled at the same parameters)";
+  record.representations.push_back(f);
+}
+
 // Draco and meshoptimizer files of the mesh within D, read back and decoded; the deviation is measured
 // on the decoded mesh (encode_mesh_within). A scene the encoder refuses (faces that fell back to meshes
 // have nothing exact to be measured against) gets a warning instead.
@@ -227,6 +249,8 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
                                      : "bound: half the written precision (rounding)";
     record.representations.push_back(f);
   }
+
+  add_compact_binary(record, compact, folder, stem);
 
   const CertifiedMesh meshed = certified_mesh(loaded, scene, record.deviation);
   record.mesh_certified_deviation = meshed.report.certified_deviation;

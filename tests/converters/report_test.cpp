@@ -110,6 +110,22 @@ TEST_F(Report, CappingFloatCountsAreThoseOfTheWrittenFiles) {
     }
 }
 
+// Our binary NURBS within D against the smallest meshes within the same D, on every bundled capping.
+TEST_F(Report, CompactBinaryNurbsIsSmallerThanDracoAndMeshoptOnTheCappings) {
+  std::string inputs;
+  for (const char* name : {"capping-90", "capping-end", "capping-post", "capping-moulded"})
+    inputs += std::string(CADNURBS_SOURCE_DIR) + "/samples/" + name + ".x3dv ";
+  const CommandResult r = run("report " + inputs + "--format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const auto& part : Json::parse(r.out)["parts"]) {
+    const Json& cnb = representation(part, "cnb");
+    EXPECT_LE(cnb["deviation"].get<double>(), 1.0) << part["input"];
+    EXPECT_LT(cnb["bytes"].get<long>(), representation(part, "draco")["bytes"].get<long>()) << part["input"];
+    EXPECT_LT(cnb["bytes"].get<long>(), representation(part, "meshopt")["gzip_bytes"].get<long>()) << part["input"];
+    EXPECT_EQ(cnb["floats"], part["compact_nurbs"]["total_floats"]) << part["input"];
+  }
+}
+
 TEST_F(Report, ASphereMeshWithinATenthOfAPercentIsNineTimesItsNurbsFile) {
   Scene scene;
   scene.root.name = "sphere";
@@ -123,6 +139,10 @@ TEST_F(Report, ASphereMeshWithinATenthOfAPercentIsNineTimesItsNurbsFile) {
   EXPECT_GE(mesh["bytes"].get<double>(), 9.0 * nurbs["bytes"].get<double>())
       << "mesh " << mesh["bytes"] << " bytes, NURBS " << nurbs["bytes"];
   EXPECT_LE(mesh["deviation"].get<double>(), 0.01);
+  const Json& cnb = representation(part, "cnb");
+  EXPECT_LE(cnb["deviation"].get<double>(), 0.01);
+  EXPECT_LT(cnb["bytes"].get<long>(), representation(part, "draco")["bytes"].get<long>());
+  EXPECT_LT(cnb["bytes"].get<long>(), representation(part, "meshopt")["gzip_bytes"].get<long>());
 }
 
 TEST_F(Report, ABadInputIsListedAndTheOthersAreStillReported) {
