@@ -25,6 +25,9 @@ std::vector<Eigen::Vector3d> quantised_positions(const TriangleMesh& mesh, MeshC
 
 // A triangle by its corner positions, rotated so that the smallest corner comes first (orientation kept):
 // equal for the same triangle whatever the vertex order and first corner of the mesh holding it.
+// Triangles with two corners at one position are left out: quantisation makes such slivers of small
+// parts and Draco drops them (a repeated index). That loses no point of the mesh: the collapsed triangle
+// is a segment that the neighbours across its two other sides cover (their images share it).
 using TriangleKey = std::array<double, 9>;
 
 std::vector<TriangleKey> triangle_keys(const std::vector<Eigen::Vector3d>& positions,
@@ -35,6 +38,10 @@ std::vector<TriangleKey> triangle_keys(const std::vector<Eigen::Vector3d>& posit
   std::vector<TriangleKey> keys;
   keys.reserve(triangles.size());
   for (const auto& t : triangles) {
+    const auto& a = positions[t[0]];
+    const auto& b = positions[t[1]];
+    const auto& c = positions[t[2]];
+    if (a == b || b == c || c == a) continue;
     int first = 0;
     for (int k = 1; k < 3; ++k)
       if (less(positions[t[k]], positions[t[first]])) first = k;
