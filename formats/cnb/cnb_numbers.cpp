@@ -92,7 +92,8 @@ std::vector<double> read_knots(ByteReader& in, size_t expected_count, KnotCache&
       if (i > 0) {
         const size_t at = in.offset();
         const uint64_t step = in.varuint(Field::knot);
-        if (step >= 0x1p53 || static_cast<double>(n) + static_cast<double>(step) + 1 >= 0x1p53)
+        // Numerators lie in (-2^53, 2^53), so a difference up to 2^54 is legal (a knot vector from -a to a).
+        if (step >= 0x1p54 || static_cast<double>(n) + static_cast<double>(step) + 1 >= 0x1p53)
           in.fail("knot difference " + std::to_string(step) + " out of range", at);
         n += static_cast<int64_t>(step) + 1;
       }

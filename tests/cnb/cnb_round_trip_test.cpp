@@ -208,6 +208,20 @@ TEST(CnbRoundTrip, CurvesMeshesTransformsColoursNames) {
   EXPECT_LE(r.report.deviation_bound(), 0.1);
 }
 
+// Knots written as 17-digit decimals from -a to a: numerators near -2^53 and 2^53, whose difference
+// exceeds 2^53 (a KiCad Phoenix connector's pcurve; the reader refused its own file).
+TEST(CnbRoundTrip, KnotsSymmetricAboutZeroWithSeventeenDigits) {
+  const double a = 0.05950000000000001;  // 5950000000000001 / 10^17 exactly: no shorter decimal
+  NurbsCurve curve;
+  curve.order = 3;
+  curve.knots = {-a, -a, -a, a, a, a};
+  curve.points = {{0, 0, 0}, {1, 2, 0}, {2, 0, 1}};
+  Scene scene;
+  scene.root.shapes.push_back({"curve", curve, std::nullopt});
+  const RoundTrip r = round_trip(scene, 0.01);
+  EXPECT_EQ(std::get<NurbsCurve>(r.decoded.root.shapes[0].geometry).knots, curve.knots);
+}
+
 // Doubling any step would let the bound exceed its share of D: the steps are the coarsest.
 TEST(CnbSteps, CoarsestTheBoundAllows) {
   const Scene& scene = corpus_scene();
