@@ -34,7 +34,7 @@ int run_demo(const std::vector<std::string>& args) {
   }
   const std::string dir = a.value("output", "cadnurbs-demo");
   std::cout << "Stair cappings: storage as counted in seed 001, 6.1 (surfaces; trimming curves apart)\n";
-  std::cout << std::left << std::setw(14) << "capping" << std::right << std::setw(9) << "surfaces" << std::setw(12)
+  std::cout << std::left << std::setw(17) << "capping" << std::right << std::setw(9) << "surfaces" << std::setw(12)
             << "ctrl pts" << std::setw(8) << "knots" << std::setw(13) << "NURBS floats" << std::setw(12)
             << "trim floats" << std::setw(14) << "mesh vertices" << std::setw(12) << "mesh floats" << std::setw(8)
             << "ratio" << std::setw(18) << "floats @0.1 mm" << std::setw(8) << "ratio" << "\n";
@@ -47,7 +47,7 @@ int run_demo(const std::vector<std::string>& args) {
     const long mesh_floats = 3 * static_cast<long>(mesh.positions.size());
     const long fine_floats = 3 * static_cast<long>(capping_mesh(capping, kFineChordDeviation).positions.size());
     const double nurbs_total = double(nurbs_floats + trim_floats);
-    std::cout << std::left << std::setw(14) << name << std::right << std::setw(9) << c.surfaces << std::setw(12)
+    std::cout << std::left << std::setw(17) << name << std::right << std::setw(9) << c.surfaces << std::setw(12)
               << c.control_points << std::setw(8) << c.knots << std::setw(13) << nurbs_floats << std::setw(12)
               << trim_floats << std::setw(14) << mesh.positions.size() << std::setw(12) << mesh_floats << std::setw(8)
               << std::fixed << std::setprecision(2) << mesh_floats / nurbs_total << std::setw(18) << fine_floats

@@ -65,13 +65,17 @@ TEST_F(Cli, DemoPrintsTheThesisCountsAndTheFilesItWrote) {
   ASSERT_EQ(r.status, 0) << r.err;
   // capping-90: body 21 x 7 points + two 2 x 2 lids = 155 control points; knots 24 + 10 + 2 x 8 = 50;
   // floats 4 x 155 + 50 = 670.
-  EXPECT_NE(r.out.find("capping-90            3         155      50          670"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("capping-90               3         155      50          670"), std::string::npos) << r.out;
   for (const auto& name : capping_shape_names())
     for (const char* ext : {".wrl", ".x3dv", ".x3d", ".stl", ".step", ".iges"}) {
       const std::string file = path("demo/" + name + ext);
       EXPECT_TRUE(fs::exists(file)) << file;
       EXPECT_NE(r.out.find(file), std::string::npos) << file;
     }
+  // It ends with the storage report of the cappings: a table row per capping, written to report.md too.
+  EXPECT_TRUE(fs::exists(path("demo/report.md")));
+  for (const auto& name : capping_shape_names())
+    EXPECT_NE(r.out.find("| " + path("demo/" + name + ".x3dv") + " | 1 mm |"), std::string::npos) << name;
 }
 
 TEST_F(Cli, MissingInputIsOneLineNamingTheFile) {
