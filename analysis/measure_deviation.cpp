@@ -11,6 +11,7 @@
 #include <limits>
 #include <memory>
 #include <thread>
+#include <utility>
 
 #include "analysis/point_inversion.hpp"
 #include "analysis/sample_triangles.hpp"
@@ -38,7 +39,30 @@ struct MeasuredFace {
   TrimmedSurface trimmed;  // in world coordinates
   std::unique_ptr<SurfaceEvaluator> eval;
   std::unique_ptr<PointInLoops> region;
+  // Domain start, C0 knots, domain end, per direction: the surface is smooth between two of them and
+  // may have a crease on each inner one.
+  std::vector<double> u_smooth, v_smooth;
 };
+
+// Domain start, the C0 knots, domain end.
+std::vector<double> smooth_pieces(const std::vector<double>& knots, int order, int count) {
+  std::vector<double> out{knots[order - 1]};
+  for (double k : c0_knots(knots, order, count)) out.push_back(k);
+  out.push_back(knots[count]);
+  return out;
+}
+
+// Which piece [pieces[i], pieces[i + 1]] holds x (a value on an inner break: the piece after it).
+size_t piece_of(const std::vector<double>& pieces, double x) {
+  const auto after = std::upper_bound(pieces.begin() + 1, pieces.end() - 1, x);
+  return static_cast<size_t>(after - pieces.begin()) - 1;
+}
+
+// x brought into piece i, a hair inside it so the surface is evaluated on that side of a crease.
+double into_piece(const std::vector<double>& pieces, size_t i, double x) {
+  const double hair = 1e-9 * (pieces[i + 1] - pieces[i]);
+  return std::clamp(x, pieces[i] + hair, pieces[i + 1] - hair);
+}
 
 // A reference triangle: which face, and the (u,v) of its corners.
 struct ReferenceTriangle {
@@ -139,6 +163,9 @@ class Measurer {
       auto f = std::make_unique<MeasuredFace>();
       f->trimmed = std::move(surfaces[i]);
       f->eval = std::make_unique<SurfaceEvaluator>(f->trimmed.surface);
+      const NurbsSurface& surface = f->trimmed.surface;
+      f->u_smooth = smooth_pieces(surface.u_knots, surface.u_order, surface.u_count);
+      f->v_smooth = smooth_pieces(surface.v_knots, surface.v_order, surface.v_count);
       faces_.push_back(std::move(f));
     }
     build_references();
@@ -346,14 +373,34 @@ class Measurer {
     return boundary_segments_.empty() ? best : std::min(best, to_boundary(p));
   }
 
-  // Newton from the (u,v) of `near` on reference triangle `index`; a foot inside the trims and
-  // away from the domain's edge settles the answer.
+  // Newton from the (u,v) of `near` on reference triangle `index`.
+  // A reference triangle whose corners lie on both sides of a crease (a C0 knot line: a profile's
+  // corner) is a chord across it: the (u,v) of `near` may lie on the far side, where Newton can only
+  // reach that side's own foot (capping-post: 2.67 mm off the arc of a cove for a point 0.26 mm off
+  // the flat beside it). So Newton also starts on the side of the crease of each corner.
   void project_from(const Eigen::Vector3d& p, size_t index, const Eigen::Vector3d& near, double& best,
                     bool& settled) const {
     const ReferenceTriangle& r = reference_info_[index];
     const Eigen::Vector3d l = barycentric(reference_triangles_[index], near);
     const Eigen::Vector2d start = l[0] * r.uv[0] + l[1] * r.uv[1] + l[2] * r.uv[2];
     const MeasuredFace& f = *faces_[r.face];
+    const size_t start_i = piece_of(f.u_smooth, start.x()), start_j = piece_of(f.v_smooth, start.y());
+    newton_from(p, f, start, near, best, settled);
+    std::pair<size_t, size_t> tried[3];
+    int count = 0;
+    for (const Eigen::Vector2d& corner : r.uv) {
+      const std::pair<size_t, size_t> side(piece_of(f.u_smooth, corner.x()), piece_of(f.v_smooth, corner.y()));
+      if (side == std::pair(start_i, start_j) || std::find(tried, tried + count, side) != tried + count) continue;
+      tried[count++] = side;
+      newton_from(p, f,
+                  {into_piece(f.u_smooth, side.first, start.x()), into_piece(f.v_smooth, side.second, start.y())},
+                  near, best, settled);
+    }
+  }
+
+  // One Newton run from `start`; a foot inside the trims and away from the domain's edge settles the answer.
+  void newton_from(const Eigen::Vector3d& p, const MeasuredFace& f, const Eigen::Vector2d& start,
+                   const Eigen::Vector3d& near, double& best, bool& settled) const {
     const SurfaceEvaluator& e = *f.eval;
     // The start is a surface point too: every candidate inside the trims bounds the distance.
     const double start_distance = (e.point(start.x(), start.y()) - p).norm();

@@ -3,8 +3,10 @@
 //  mesh -> surface: points on every triangle (corners, edge and interior lattice points, the lattice
 //    as fine as `spacing`), each projected on the exact surface by point inversion (Newton) started
 //    from the nearest point of a fine reference triangulation of the trimmed surfaces (CGAL AABB
-//    tree). A projection that leaves the trimmed region (even-odd on densely sampled loops) is
-//    replaced by the nearest point of the boundary curves (Newton on the curve on the surface).
+//    tree), and also on each side of a crease (C0 knot line) that reference triangle crosses, whose
+//    interpolated (u,v) may lie on the wrong side of it. A projection that leaves the trimmed region
+//    (even-odd on densely sampled loops) is replaced by the nearest point of the boundary curves
+//    (Newton on the curve on the surface).
 //  surface -> mesh: points of the trimmed surfaces (a grid inside the loops at `spacing`, and the
 //    loops themselves) to the nearest point of the mesh (CGAL AABB tree of its triangles).
 // Sampling measures, it does not bound: the maxima are attained values, never above the truth by
