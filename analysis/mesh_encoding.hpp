@@ -8,7 +8,8 @@
 //     distance), all faces as one mesh, weld_exact (shared edges carry bit-identical vertices);
 //     certified deviation c = f * D (the tessellator's target: its trim chords are sampled to it; its
 //     triangle bounds, reported separately, are below it).
-//  2. the coarsest position bits whose largest vertex displacement is <= D - c (>= (1 - f) * D). The
+//  2. the coarsest position bits whose largest vertex displacement is <= D - c (>= (1 - f) * D) and that
+//     collapse no triangle (two corners on one grid point). The
 //     displacement is exact, not estimated: the codec's quantisation is replayed vertex by vertex
 //     (draco_quantised_positions, meshopt_quantised_positions) and the largest distance taken.
 //  3. encode, decode, and check that the decoded triangles are the welded triangles with every corner
@@ -74,8 +75,9 @@ MeshEncodingFigures encode_mesh_within(const Scene& scene, double max_deviation,
 // mesh welded by exact position. `report` (optional) gets the tessellation's figures.
 TriangleMesh certified_world_mesh(const Scene& scene, double deviation, TessellationReport* report = nullptr);
 
-// The coarsest bits (1..30) at which `codec` moves no vertex of `mesh` farther than `budget`, with that
-// largest displacement; bits 0 when even 30 bits move one farther.
+// The coarsest bits (1..30) at which `codec` moves no vertex of `mesh` farther than `budget` and puts no
+// two corners of a triangle on one grid point (a collapsed triangle is dropped by Draco, and a thin
+// feature that collapses whole is then lost), with that largest displacement; bits 0 when none does.
 struct QuantisationChoice {
   int bits = 0;
   double displacement = 0;
