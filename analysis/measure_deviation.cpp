@@ -52,10 +52,20 @@ std::vector<double> smooth_pieces(const std::vector<double>& knots, int order, i
   return out;
 }
 
-// Which piece [pieces[i], pieces[i + 1]] holds x (a value on an inner break: the piece after it).
-size_t piece_of(const std::vector<double>& pieces, double x) {
-  const auto after = std::upper_bound(pieces.begin() + 1, pieces.end() - 1, x);
+// Which piece [pieces[i], pieces[i + 1]] holds x; a value on an inner break is in both pieces beside it:
+// `lower` picks the one before it, else the one after.
+size_t piece_of(const std::vector<double>& pieces, double x, bool lower = false) {
+  const auto after = lower ? std::lower_bound(pieces.begin() + 1, pieces.end() - 1, x)
+                           : std::upper_bound(pieces.begin() + 1, pieces.end() - 1, x);
   return static_cast<size_t>(after - pieces.begin()) - 1;
+}
+
+// The pieces from the one holding lo to the one holding hi (both sides of a break included), at most
+// `reach` on either side of piece `around`.
+std::pair<size_t, size_t> pieces_between(const std::vector<double>& pieces, double lo, double hi, size_t around,
+                                         size_t reach) {
+  const size_t first = piece_of(pieces, lo, true), last = piece_of(pieces, hi);
+  return {std::max(first, around > reach ? around - reach : 0), std::min(last, around + reach)};
 }
 
 // x brought into piece i, a hair inside it so the surface is evaluated on that side of a crease.
@@ -374,28 +384,27 @@ class Measurer {
   }
 
   // Newton from the (u,v) of `near` on reference triangle `index`.
-  // A reference triangle whose corners lie on both sides of a crease (a C0 knot line: a profile's
-  // corner) is a chord across it: the (u,v) of `near` may lie on the far side, where Newton can only
-  // reach that side's own foot (capping-post: 2.67 mm off the arc of a cove for a point 0.26 mm off
-  // the flat beside it). So Newton also starts on the side of the crease of each corner.
+  // A reference triangle across a crease (a C0 knot line: a profile's corner) is a chord over it: the
+  // (u,v) of `near` may lie on the far side, where Newton can only reach that side's own foot
+  // (capping-post: 2.67 mm off the arc of a cove for a point 0.26 mm off the flat beside it). So
+  // Newton also starts in every smooth piece the triangle touches (a few on either side at most).
   void project_from(const Eigen::Vector3d& p, size_t index, const Eigen::Vector3d& near, double& best,
                     bool& settled) const {
     const ReferenceTriangle& r = reference_info_[index];
     const Eigen::Vector3d l = barycentric(reference_triangles_[index], near);
     const Eigen::Vector2d start = l[0] * r.uv[0] + l[1] * r.uv[1] + l[2] * r.uv[2];
     const MeasuredFace& f = *faces_[r.face];
-    const size_t start_i = piece_of(f.u_smooth, start.x()), start_j = piece_of(f.v_smooth, start.y());
     newton_from(p, f, start, near, best, settled);
-    std::pair<size_t, size_t> tried[3];
-    int count = 0;
-    for (const Eigen::Vector2d& corner : r.uv) {
-      const std::pair<size_t, size_t> side(piece_of(f.u_smooth, corner.x()), piece_of(f.v_smooth, corner.y()));
-      if (side == std::pair(start_i, start_j) || std::find(tried, tried + count, side) != tried + count) continue;
-      tried[count++] = side;
-      newton_from(p, f,
-                  {into_piece(f.u_smooth, side.first, start.x()), into_piece(f.v_smooth, side.second, start.y())},
-                  near, best, settled);
-    }
+    const size_t start_i = piece_of(f.u_smooth, start.x()), start_j = piece_of(f.v_smooth, start.y());
+    const auto us = pieces_between(f.u_smooth, std::min({r.uv[0].x(), r.uv[1].x(), r.uv[2].x()}),
+                                   std::max({r.uv[0].x(), r.uv[1].x(), r.uv[2].x()}), start_i, 3);
+    const auto vs = pieces_between(f.v_smooth, std::min({r.uv[0].y(), r.uv[1].y(), r.uv[2].y()}),
+                                   std::max({r.uv[0].y(), r.uv[1].y(), r.uv[2].y()}), start_j, 3);
+    for (size_t i = us.first; i <= us.second; ++i)
+      for (size_t j = vs.first; j <= vs.second; ++j)
+        if (i != start_i || j != start_j)
+          newton_from(p, f, {into_piece(f.u_smooth, i, start.x()), into_piece(f.v_smooth, j, start.y())}, near, best,
+                      settled);
   }
 
   // One Newton run from `start`; a foot inside the trims and away from the domain's edge settles the answer.

@@ -7,6 +7,8 @@
 // within 0.19 mm at D = 0.25.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "analysis/measure_deviation.hpp"
 #include "analysis/scene_triangles.hpp"
 #include "analysis/sew_faces.hpp"
@@ -17,9 +19,14 @@
 namespace cadnurbs {
 namespace {
 
+const Scene& capping_post() {
+  static const Scene scene = read_vrml(CADNURBS_SOURCE_DIR "/samples/capping-post.x3dv");
+  return scene;
+}
+
 // The mesh convert --mesh writes for a VRML/X3D input: sewn (the file names no edges), then certified.
 DeviationMeasure capping_post_measured_at(double max_deviation) {
-  const Scene scene = read_vrml(CADNURBS_SOURCE_DIR "/samples/capping-post.x3dv");
+  const Scene& scene = capping_post();
   const Scene sewn = sew_faces(scene, sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), max_deviation));
   TessellationReport report;
   const TriangleMesh mesh = scene_triangles(tessellate_to_deviation(sewn, max_deviation, &report));
@@ -41,6 +48,19 @@ TEST(CreaseDeviation, CappingPostMeshMeasuresWithinAQuarterMillimetre) {
   EXPECT_LE(m.mesh_to_surface.max, 0.25);
   EXPECT_LE(m.surface_to_mesh.max, 0.25);
   EXPECT_GT(m.overall.max, 0.15);
+}
+
+// The body alone (other sample spacing, so other reference triangles): one of them spans two corners
+// (u 9.875 to 11, corners at 10 and 11), and the foot lies on the flat between them (it measured 2.99).
+TEST(CreaseDeviation, ReferenceTriangleOverTwoCornersFindsTheFlatBetween) {
+  const TrimmedSurface* body = nullptr;
+  for_each_shape(capping_post(), [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
+    if (display_name(shape) == "body") body = std::get_if<TrimmedSurface>(&shape.geometry);
+  });
+  ASSERT_NE(body, nullptr);
+  const DeviationMeasure m = measure_deviation(tessellate_to_deviation(*body, 1.0), *body);
+  EXPECT_LE(m.mesh_to_surface.max, 1.0);
+  EXPECT_GT(m.mesh_to_surface.max, 0.5);
 }
 
 }  // namespace
