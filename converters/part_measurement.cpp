@@ -10,6 +10,9 @@
 
 #include "analysis/measure_deviation.hpp"
 #include "analysis/mesh_encoding.hpp"
+#include "analysis/nurss/nurss_figures.hpp"
+#include "analysis/nurss/nurss_text.hpp"
+#include "analysis/report/report_formats.hpp"
 #include "analysis/paired_scene_deviation.hpp"
 #include "analysis/report/storage_crossover.hpp"
 #include "analysis/scene_triangles.hpp"
@@ -152,6 +155,35 @@ void add_compact_binary(PartRecord& record, const Scene& compact, const Folder& 
   record.representations.push_back(f);
 }
 
+// The quadratic NURSS of the part's order-3 nets with the lids as n-gon faces (analysis/nurss), where the
+// part is made of such nets (the stair cappings): its control mesh written as a .nurss text file and read
+// back, and its limit mesh at the fewest levels within D away from the n-gons, written as an
+// IndexedFaceSet to look at; the deviation given is the whole limit mesh's, measured against the NURBS.
+void add_nurss(PartRecord& record, const Scene& scene, const Folder& folder, const std::string& stem) {
+  std::string why_not;
+  const auto figures = nurss_figures(scene, record.deviation, &why_not);
+  if (!figures) return;  // not a part of quadratic nets: no NURSS row
+  const fs::path path = folder.file(stem, ".nurss");
+  write_file_atomically(path.string(), figures->text);
+  RepresentationFigures f{"nurss", "quadratic NURSS control mesh (.nurss)", RepresentationKind::nurss, 0, 0, 0, 0, 0, ""};
+  measure_bytes(path, f);
+  const NurssStorage storage = nurss_storage(read_nurss_text(read_file(path.string()), path.string()));
+  f.floats = storage.floats;
+  f.integers = storage.connectivity_integers;
+  f.deviation = figures->whole.overall.max;
+  f.deviation_basis = "limit mesh at " + std::to_string(figures->levels) + " levels measured against the NURBS; " +
+                      report_number(figures->away_from_ngons.mesh_to_surface.max) + " away from the n-gon faces";
+  record.representations.push_back(f);
+  Scene limit;
+  limit.unit = scene.unit;
+  limit.root.name = stem + "-nurss-limit";
+  limit.root.shapes.push_back({"limit", figures->limit_mesh, std::nullopt});
+  write_scene(folder.file(stem + "-nurss-limit", ".wrl").string(), limit, SceneWriteOptions{});
+  if (!figures->within_max_deviation || f.deviation > record.deviation)
+    record.warnings.push_back("NURSS limit mesh: " + report_number(f.deviation) + " from the NURBS after " +
+                              std::to_string(figures->levels) + " levels (" + f.deviation_basis + ")");
+}
+
 // Draco and meshoptimizer files of the mesh within D, read back and decoded; the deviation is measured
 // on the decoded mesh (encode_mesh_within). A scene the encoder refuses (faces that fell back to meshes
 // have nothing exact to be measured against) gets a warning instead.
@@ -251,6 +283,7 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
   }
 
   add_compact_binary(record, compact, folder, stem);
+  add_nurss(record, scene, folder, stem);
 
   const CertifiedMesh meshed = certified_mesh(loaded, scene, record.deviation);
   record.mesh_certified_deviation = meshed.report.certified_deviation;

@@ -14,7 +14,14 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-const char* kind_name(RepresentationKind kind) { return kind == RepresentationKind::nurbs ? "nurbs" : "mesh"; }
+const char* kind_name(RepresentationKind kind) {
+  switch (kind) {
+    case RepresentationKind::nurbs: return "nurbs";
+    case RepresentationKind::mesh: return "mesh";
+    case RepresentationKind::nurss: return "nurss";
+  }
+  return "";
+}
 
 Json json_number(double value) { return std::isnan(value) ? Json(nullptr) : Json(value); }
 

@@ -10,7 +10,8 @@
 
 namespace cadnurbs {
 
-enum class RepresentationKind { nurbs, mesh };
+// nurss: a subdivision surface's control mesh (its bytes against the NURBS's and the meshes').
+enum class RepresentationKind { nurbs, mesh, nurss };
 
 // One written file.
 struct RepresentationFigures {

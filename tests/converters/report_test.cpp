@@ -5,8 +5,11 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <iterator>
+#include <sstream>
 
 #include "../analysis/analysis_shapes.hpp"
 #include "converters/file_formats.hpp"
@@ -98,6 +101,34 @@ TEST_F(Report, CappingFloatCountsAreThoseOfTheWrittenFiles) {
   EXPECT_EQ(part["mesh"]["triangles"].get<long>() * 3, corners / 2) << "every triangle's corners, indexed twice";
   EXPECT_EQ(wrl_mesh["bytes"].get<long>(), static_cast<long>(mesh.size()));
 
+  // NURSS: 4 per control point + one knot interval per (vertex, outgoing edge), counted from the written
+  // .nurss text (docs/nurss.md: "vertices V" lines of x y z w, "intervals F" lines, "open-sides B" lines).
+  {
+    std::istringstream nurss(read_file(path("files/capping-90/capping-90.nurss")));
+    std::string line, section;
+    long nurss_floats = 0, remaining = 0;
+    while (std::getline(nurss, line)) {
+      std::istringstream words(line);
+      std::string first;
+      words >> first;
+      if (remaining == 0 && (first == "vertices" || first == "faces" || first == "labels" || first == "intervals" ||
+                             first == "open-sides")) {
+        section = first;
+        words >> remaining;
+        continue;
+      }
+      if (remaining == 0) continue;
+      --remaining;
+      std::istringstream values(line);
+      std::vector<std::string> v{std::istream_iterator<std::string>(values), std::istream_iterator<std::string>()};
+      if (section == "vertices" || section == "intervals") nurss_floats += static_cast<long>(v.size());
+      if (section == "open-sides") nurss_floats += 1;  // the interval of a boundary side
+    }
+    const Json& nurss_row = representation(part, "nurss");
+    EXPECT_EQ(nurss_row["floats"].get<long>(), nurss_floats);
+    EXPECT_EQ(nurss_row["kind"], "nurss");
+    EXPECT_LE(nurss_row["deviation"].get<double>(), 1.0) << "the limit mesh within D of the NURBS";
+  }
   // The compressed meshes were written, decoded and measured too.
   EXPECT_LT(representation(part, "draco")["bytes"].get<long>(), wrl_mesh["gzip_bytes"].get<long>());
   EXPECT_LT(representation(part, "meshopt")["gzip_bytes"].get<long>(), wrl_mesh["gzip_bytes"].get<long>());
@@ -141,6 +172,9 @@ TEST_F(Report, ASphereMeshWithinATenthOfAPercentIsNineTimesItsNurbsFile) {
   EXPECT_LE(mesh["deviation"].get<double>(), 0.01);
   const Json& cnb = representation(part, "cnb");
   EXPECT_LE(cnb["deviation"].get<double>(), 0.01);
+  std::cout << "sphere r = 10 mm at D = 0.01 mm: IndexedFaceSet " << mesh["bytes"] << " bytes, VRML97 NURBS "
+            << nurbs["bytes"] << ", .cnb " << cnb["bytes"] << ", Draco " << representation(part, "draco")["bytes"]
+            << ", meshopt gzip'd " << representation(part, "meshopt")["gzip_bytes"] << "\n";
   EXPECT_LT(cnb["bytes"].get<long>(), representation(part, "draco")["bytes"].get<long>());
   EXPECT_LT(cnb["bytes"].get<long>(), representation(part, "meshopt")["gzip_bytes"].get<long>());
 }
