@@ -78,6 +78,14 @@ TriangleVerdict certify_triangle(const SurfaceEvaluator& e, const SurfaceDeviati
   const bool plane = cross.norm() > 1e-12 * (B.point - A.point).norm() * (C.point - A.point).norm() && cross.norm() > 0;
   const Eigen::Vector3d normal = plane ? Eigen::Vector3d(cross.normalized()) : Eigen::Vector3d::Zero();
   const auto parts = pieces(bound, A.uv, B.uv, C.uv, v);
+  // Error at a point of the triangle: cached at its corners, evaluated elsewhere.
+  auto error_at = [&](const Barycentric& l) {
+    for (int q = 0; q < 3; ++q)
+      if (l[q] == 1.0) return corners[q]->error.norm();
+    const Eigen::Vector2d uv = l[0] * A.uv + l[1] * B.uv + l[2] * C.uv;
+    return plane ? std::abs(normal.dot(e.point(uv.x(), uv.y()) - A.point))
+                 : point_triangle_distance(e.point(uv.x(), uv.y()), A.point, B.point, C.point);
+  };
   double total = 0;
   for (const auto& piece : parts) {
     Eigen::Vector2d corner[3];
@@ -87,8 +95,11 @@ TriangleVerdict certify_triangle(const SurfaceEvaluator& e, const SurfaceDeviati
                               std::min({corner[0].y(), corner[1].y(), corner[2].y()}),
                               std::max({corner[0].y(), corner[1].y(), corner[2].y()}));
     const double whole = triangle_deviation_bound(corner[0], corner[1], corner[2], m);
-    // The rigorous bound alone may do (flat or nearly flat pieces): no sampling then.
-    const double corner_error = parts.size() == 1 ? v.sampled : d;
+    // The rigorous bound alone may do (flat or nearly flat pieces): no sampling then. A piece's corners
+    // on a C0 line are points of the crease, which may lie far off the triangle's plane (a chord cutting
+    // a profile's corner between two flat pieces): their errors count like the mesh corners'.
+    double corner_error = 0;
+    for (const Barycentric& l : piece) corner_error = std::max(corner_error, error_at(l));
     if (corner_error + whole <= d) {
       total = std::max(total, corner_error + whole);
       continue;
@@ -99,20 +110,10 @@ TriangleVerdict certify_triangle(const SurfaceEvaluator& e, const SurfaceDeviati
       for (int i = 0; i <= k; ++i)
         for (int j = 0; i + j <= k; ++j) {
           const Barycentric l = (piece[0] * (k - i - j) + piece[1] * i + piece[2] * j) / k;
-          // Corners of the mesh triangle: cached error.
-          int corner_index = -1;
-          for (int q = 0; q < 3; ++q)
-            if (l[q] == 1.0) corner_index = q;
-          double err;
-          if (corner_index >= 0) {
-            err = corners[corner_index]->error.norm();
-          } else {
-            const Eigen::Vector2d uv = l[0] * A.uv + l[1] * B.uv + l[2] * C.uv;
-            err = plane ? std::abs(normal.dot(e.point(uv.x(), uv.y()) - A.point))
-                        : point_triangle_distance(e.point(uv.x(), uv.y()), A.point, B.point, C.point);
-          }
+          const bool mesh_corner = l[0] == 1.0 || l[1] == 1.0 || l[2] == 1.0;
+          const double err = error_at(l);
           sampled = std::max(sampled, err);
-          if (err >= v.sampled && corner_index < 0) {
+          if (err >= v.sampled && !mesh_corner) {
             v.sampled = err;
             v.peak = l[0] * A.uv + l[1] * B.uv + l[2] * C.uv;
             v.peak_side = l[2] == 0 ? std::optional<int>(0) : l[0] == 0 ? std::optional<int>(1)
