@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <map>
 #include <set>
 #include <cmath>
 #include <filesystem>
@@ -76,6 +77,8 @@ const EncodedMeshFile kEncodedMeshFiles[] = {
 constexpr double kCurveFractions[] = {1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5};
 // A curve point whose mesh would exceed this many triangles is left out (its memory, not its truth).
 constexpr long kCurveTriangleLimit = 4'000'000;
+// Draco and meshopt are tried (three tessellations each, and a measurement) up to this many triangles.
+constexpr long kCurveEncodingLimit = 200'000;
 
 // A folder that is removed when the measurement ends, unless the user named it.
 class Folder {
@@ -215,8 +218,12 @@ void add_encoded_meshes(PartRecord& record, const Scene& faces, const Folder& fo
   }
 }
 
-void add_curve(PartRecord& record, const BrepTranslation& loaded, const Scene& scene, const Folder& folder,
-               const std::string& stem) {
+// Bytes against D: the certified mesh as IndexedFaceSet at every D of kCurveFractions; Draco and meshopt
+// within the same D while the mesh is small enough to encode and measure in reasonable time; our .cnb of
+// the compact form within the same D. Then, for each mesh encoding, the D below which it costs more than
+// the .cnb at that D (the curves are interpolated log-log between measured points).
+void add_curve(PartRecord& record, const BrepTranslation& loaded, const Scene& scene, const Scene& compact,
+               const Folder& folder, const std::string& stem) {
   SceneWriteOptions write_options;
   for (double fraction : kCurveFractions) {
     const double d = fraction * record.diagonal;
@@ -232,17 +239,32 @@ void add_curve(PartRecord& record, const BrepTranslation& loaded, const Scene& s
     measure_bytes(path, f);
     const MeshStorage storage = mesh_storage(read_back_mesh(path));
     record.curve.push_back({"wrl-mesh", d, f.bytes, f.gzip_bytes, storage.indexed_floats});
+    CnbOptions cnb;
+    cnb.max_deviation = d;
+    const long cnb_bytes = static_cast<long>(write_cnb(compact, cnb).size());
+    record.curve.push_back({"cnb", d, cnb_bytes, cnb_bytes, 0});
+    if (meshed.report.triangles > kCurveEncodingLimit) continue;
+    try {
+      const auto encoded =
+          encode_mesh_within(meshed.sewn ? meshed.faces : scene, d, {MeshCodec::draco, MeshCodec::meshopt});
+      for (const auto& e : encoded)
+        record.curve.push_back({mesh_codec_name(e.codec), d, e.raw_bytes, e.gzip_bytes, 3 * e.vertices});
+    } catch (const std::exception&) {
+      // the at-D rows already say why compressed meshes of this part cannot be measured
+    }
   }
-  const RepresentationFigures* nurbs = smallest_representation(record, RepresentationKind::nurbs);
-  if (!nurbs) return;
-  const long nurbs_bytes = delivered_bytes(*nurbs);
-  std::vector<BytesAtDeviation> mesh;
-  for (const auto& p : record.curve) mesh.push_back({p.deviation, double(std::min(p.bytes, p.gzip_bytes))});  // as delivered
-  const Crossover crossing = storage_crossover(mesh, double(nurbs_bytes));
-  CrossoverFigure figure{"wrl-mesh", nurbs->key, nurbs_bytes};
-  if (crossing.deviation) figure.deviation = *crossing.deviation;
-  figure.mesh_larger_everywhere = crossing.mesh_larger_everywhere;
-  record.crossovers.push_back(figure);
+  std::map<std::string, std::vector<BytesAtDeviation>> curves;
+  for (const auto& p : record.curve) curves[p.key].push_back({p.deviation, double(std::min(p.bytes, p.gzip_bytes))});
+  const RepresentationFigures* cnb_at_d = find_representation(record, "cnb");
+  if (!cnb_at_d) return;
+  for (const char* key : {"wrl-mesh", "draco", "meshopt"}) {
+    if (!curves.count(key)) continue;
+    const Crossover crossing = storage_crossover(curves[key], double(cnb_at_d->bytes));
+    CrossoverFigure figure{key, "cnb", cnb_at_d->bytes};
+    if (crossing.deviation) figure.deviation = *crossing.deviation;
+    figure.mesh_larger_everywhere = crossing.mesh_larger_everywhere;
+    record.crossovers.push_back(figure);
+  }
 }
 
 PartRecord measure(const std::string& input, const PartMeasurementOptions& options, PartViews* views) {
@@ -303,7 +325,7 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
     write_scene(mesh_view.string(), meshed.meshes, write_options);
     views->mesh_x3dv = read_file(mesh_view.string());
   }
-  if (options.curve) add_curve(record, loaded, scene, folder, stem);
+  if (options.curve) add_curve(record, loaded, scene, compact, folder, stem);
   return record;
 }
 
