@@ -22,7 +22,7 @@ TEST(StorageAccounting, ASphereCountsFourFloatsPerControlPointAndOnePerKnot) {
   const TrimmedSurface sphere = test::sphere(10.0);
   ASSERT_EQ(sphere.surface.u_count, 9);  // four rational arcs round
   ASSERT_EQ(sphere.surface.v_count, 5);  // two arcs pole to pole
-  const NurbsStorage s = nurbs_storage(scene_of({Shape{"sphere", sphere}}));
+  const NurbsStorage s = nurbs_storage(scene_of({Shape{"sphere", sphere, std::nullopt}}));
   EXPECT_EQ(s.surfaces, 1);
   EXPECT_EQ(s.control_points, 45);
   EXPECT_EQ(s.knots, 12 + 8);
@@ -37,7 +37,7 @@ TEST(StorageAccounting, TrimmingCurvesAndPolygonsAreCountedApart) {
   PolygonMesh square;
   square.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   square.polygons = {{0, 1, 2, 3}};
-  const NurbsStorage s = nurbs_storage(scene_of({Shape{"annulus", annulus}, Shape{"square", square}}));
+  const NurbsStorage s = nurbs_storage(scene_of({Shape{"annulus", annulus, std::nullopt}, Shape{"square", square, std::nullopt}}));
   EXPECT_EQ(s.floats, 4 * 4 + 8);  // bilinear square: 2x2 points, 4 + 4 knots
   EXPECT_EQ(s.trim_curves, 2);
   EXPECT_EQ(s.trim_control_points, 18);

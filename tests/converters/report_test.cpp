@@ -160,7 +160,7 @@ TEST_F(Report, CompactBinaryNurbsIsSmallerThanDracoAndMeshoptOnTheCappings) {
 TEST_F(Report, ASphereMeshWithinATenthOfAPercentIsNineTimesItsNurbsFile) {
   Scene scene;
   scene.root.name = "sphere";
-  scene.root.shapes.push_back(Shape{"sphere", test::sphere(10.0)});
+  scene.root.shapes.push_back(Shape{"sphere", test::sphere(10.0), std::nullopt});
   write_scene(path("sphere.x3dv"), scene, SceneWriteOptions{});
   const CommandResult r = run("report " + path("sphere.x3dv") + " --deviation 0.01 --format json");
   ASSERT_EQ(r.status, 0) << r.err;
