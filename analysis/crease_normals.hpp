@@ -1,0 +1,31 @@
+#pragma once
+// Smoothing normals with sharp creases kept: VRML's creaseAngle on an indexed triangle mesh.
+#include "core/triangle_mesh.hpp"
+
+namespace cadnurbs {
+
+// What with_crease_normals found.
+struct CreaseNormalsReport {
+  int distinct_normals = 0;    // corner groups sharing one normal (a vertex with k sharp sectors counts k)
+  int smooth_edges = 0;        // two faces, opposite directions, dihedral angle below the crease angle
+  int sharp_edges = 0;         // two faces, opposite directions, angle at or above the crease angle
+  int boundary_edges = 0;      // one face
+  int non_manifold_edges = 0;  // three or more faces
+  int inconsistent_edges = 0;  // two faces running the edge the same way (orientation flips there)
+};
+
+// Takes a welded mesh (shared vertices; see weld_vertices) and a crease angle in radians; returns the
+// same positions and triangles with corner_normals replaced (three per triangle, unit length).
+// Around each vertex, two faces that share an edge are joined when the angle between their face
+// normals is below the crease angle; joins chain around the vertex, and each chain of corners gets
+// one normal: the sum of its faces' unit normals weighted by the corner angles, normalised (weighting
+// by angle makes the result independent of how a face is split into triangles). Faces across an
+// edge at or above the crease angle, a boundary edge, an edge with three or more faces, or an edge
+// where the two faces' orientations disagree, are not joined there (this is the meaning of creaseAngle
+// in VRML97 and X3D; orientation is another step's job). A zero-area triangle joins nothing and keeps
+// a zero normal; a chain whose weighted sum cancels gets each corner's own face normal.
+// Refuses (std::invalid_argument) a negative or non-finite angle; validate()s the mesh.
+TriangleMesh with_crease_normals(const TriangleMesh& welded, double crease_angle_radians,
+                                 CreaseNormalsReport* report = nullptr);
+
+}  // namespace cadnurbs
