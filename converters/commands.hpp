@@ -11,5 +11,6 @@ int run_info(const std::vector<std::string>& args);
 int run_capping(const std::vector<std::string>& args);
 int run_demo(const std::vector<std::string>& args);
 int run_report(const std::vector<std::string>& args);
+int run_normals(const std::vector<std::string>& args);
 
 }  // namespace cadnurbs

@@ -15,6 +15,7 @@ const char* kUsage =
     "  info    IN [--euclidean]\n"
     "  capping --shape NAME|all -o OUT [--path FILE --profile FILE] [--max-chord-deviation D]\n"
     "  report  IN... [--deviation D] [--format md|json|csv|html] [-o FILE] [--files DIR] [--records DIR] [--curve]\n"
+    "  normals IN.stl -o OUT [--crease-angle DEG] [--weld TOL]\n"
     "  demo    [-o DIR]\n"
     "'cadnurbs COMMAND --help' tells more.\n";
 
@@ -23,7 +24,7 @@ const char* kUsage =
 int main(int argc, char** argv) {
   using namespace cadnurbs;
   const std::map<std::string, int (*)(const std::vector<std::string>&)> commands = {
-      {"convert", run_convert}, {"info", run_info}, {"capping", run_capping}, {"demo", run_demo}, {"report", run_report}};
+      {"convert", run_convert}, {"info", run_info}, {"capping", run_capping}, {"demo", run_demo}, {"report", run_report}, {"normals", run_normals}};
   if (argc < 2) {
     std::cerr << kUsage;
     return 2;
