@@ -3,28 +3,28 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <map>
-#include <set>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <set>
 #include <unistd.h>
 
 #include "analysis/measure_deviation.hpp"
 #include "analysis/mesh_encoding.hpp"
 #include "analysis/nurss/nurss_figures.hpp"
 #include "analysis/nurss/nurss_text.hpp"
-#include "analysis/report/report_formats.hpp"
 #include "analysis/paired_scene_deviation.hpp"
+#include "analysis/report/report_formats.hpp"
 #include "analysis/report/storage_crossover.hpp"
 #include "analysis/scene_triangles.hpp"
 #include "analysis/weld_exact.hpp"
 #include "converters/file_formats.hpp"
 #include "converters/scene_preparation.hpp"
 #include "core/bounding_box.hpp"
-#include "formats/common/file_io.hpp"
-#include "formats/common/gzip.hpp"
 #include "formats/cnb/cnb_reader.hpp"
 #include "formats/cnb/cnb_writer.hpp"
+#include "formats/common/file_io.hpp"
+#include "formats/common/gzip.hpp"
 #include "formats/draco/draco_mesh_codec.hpp"
 #include "formats/meshopt/meshopt_mesh_codec.hpp"
 
