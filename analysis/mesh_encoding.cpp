@@ -47,15 +47,22 @@ std::vector<TriangleKey> triangle_keys(const std::vector<Eigen::Vector3d>& posit
   return keys;
 }
 
-// Whether quantising at `bits` puts two corners of a triangle on one grid point. Such a triangle becomes a
-// segment, which Draco drops (a repeated index); where a thin feature (a lead, a pin) collapses whole,
-// its neighbours collapse too and nothing covers it any more: the decoded mesh would leave the bound
-// (measured: 1.2 mm at D = 1 mm on TQFP-32's leads). So no triangle may collapse.
-bool collapses_a_triangle(const TriangleMesh& mesh, MeshCodec codec, int bits) {
-  const auto q = quantised_positions(mesh, codec, bits);
+// Whether the quantised positions `q` (mesh.positions' order) put two corners of a triangle on one grid
+// point. Such a triangle becomes a segment, which Draco drops (a repeated index); where a thin feature
+// (a lead, a pin) collapses whole, its neighbours collapse too and nothing covers it any more: the
+// decoded mesh would leave the bound (measured: 1.2 mm at D = 1 mm on TQFP-32's leads). So no triangle
+// may collapse.
+bool collapses_a_triangle(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& q) {
   for (const auto& t : mesh.triangles)
     if (q[t[0]] == q[t[1]] || q[t[1]] == q[t[2]] || q[t[2]] == q[t[0]]) return true;
   return false;
+}
+
+// Largest distance from a vertex of `mesh` to its quantised position `moved` (same order).
+double largest_displacement(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& moved) {
+  double largest = 0;
+  for (size_t i = 0; i < moved.size(); ++i) largest = std::max(largest, (moved[i] - mesh.positions[i]).norm());
+  return largest;
 }
 
 // One candidate: a certified tessellation encoded at its coarsest bits, decoded and checked.
@@ -105,17 +112,15 @@ TriangleMesh certified_world_mesh(const Scene& scene, double deviation, Tessella
 }
 
 double quantisation_displacement(const TriangleMesh& mesh, MeshCodec codec, int bits) {
-  const std::vector<Eigen::Vector3d> moved = quantised_positions(mesh, codec, bits);
-  double largest = 0;
-  for (size_t i = 0; i < moved.size(); ++i) largest = std::max(largest, (moved[i] - mesh.positions[i]).norm());
-  return largest;
+  return largest_displacement(mesh, quantised_positions(mesh, codec, bits));
 }
 
 QuantisationChoice coarsest_quantisation(const TriangleMesh& mesh, MeshCodec codec, double budget) {
   // Every bit count in turn: the exact displacement need not fall monotonically with the bits.
   for (int bits = 1; bits <= 30; ++bits) {
-    const double d = quantisation_displacement(mesh, codec, bits);
-    if (d <= budget && !collapses_a_triangle(mesh, codec, bits)) return {bits, d};
+    const std::vector<Eigen::Vector3d> q = quantised_positions(mesh, codec, bits);  // one replay serves both tests
+    const double d = largest_displacement(mesh, q);
+    if (d <= budget && !collapses_a_triangle(mesh, q)) return {bits, d};
   }
   return {};
 }

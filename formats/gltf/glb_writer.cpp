@@ -66,9 +66,8 @@ double srgb_to_linear(double c) {
 class GltfDocument {
  public:
   GltfDocument(const Scene& scene, const GlbOptions& options) : options_(options), frame_(gltf_frame(scene.unit)) {
-    Eigen::AlignedBox3d box;
-    collect(scene.root, Colour{}, display_name(scene.root), box);
-    grid_ = position_grid(box, options.compression == GlbCompression::none ? 16 : options.position_bits);
+    collect(scene.root, Colour{}, display_name(scene.root));
+    grid_ = position_grid(box_, options.compression == GlbCompression::none ? 16 : options.position_bits);
     add_node(scene.root);
   }
 
@@ -80,10 +79,8 @@ class GltfDocument {
     r.meshes = static_cast<long>(meshes_.size());
     r.materials = static_cast<long>(materials_.size());
     const double metres_per_unit = unit.millimetres / 1000.0;
-    double largest = 0;  // largest coordinate in metres, for float32 rounding
-    for (const auto& mesh : node_geometry_)
-      for (const auto& primitive : mesh.primitives)
-        for (const auto& p : primitive.positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+    // The largest coordinate in metres, for float32 rounding.
+    double largest = box_.isEmpty() ? 0 : std::max(box_.min().cwiseAbs().maxCoeff(), box_.max().cwiseAbs().maxCoeff());
     if (options_.compression != GlbCompression::none)
       largest = std::max(largest, grid_.origin.cwiseAbs().maxCoeff() + grid_.step * std::ldexp(1.0, grid_.bits));
     // float32 rounding: the input float, the decoder's float arithmetic (a few roundings).
@@ -95,14 +92,14 @@ class GltfDocument {
   }
 
  private:
-  // Pass 1: every node's primitives (in tree order) and the box of all positions.
-  void collect(const SceneNode& node, const Colour& inherited, const std::string& path, Eigen::AlignedBox3d& box) {
+  // Pass 1: every node's primitives (in tree order) and box_, the box of all positions.
+  void collect(const SceneNode& node, const Colour& inherited, const std::string& path) {
     const Colour colour = node.colour.value_or(inherited);
     node_geometry_.push_back(node_primitives(node, colour, frame_, path));
     report_.skipped_curves += node_geometry_.back().skipped_curves;
     for (const auto& primitive : node_geometry_.back().primitives)
-      for (const auto& p : primitive.positions) box.extend(p);
-    for (const auto& child : node.children) collect(child, colour, path + "/" + display_name(child), box);
+      for (const auto& p : primitive.positions) box_.extend(p);
+    for (const auto& child : node.children) collect(child, colour, path + "/" + display_name(child));
   }
 
   // Pass 2, same order as pass 1: nodes, meshes, data. Returns the node's index.
@@ -425,6 +422,7 @@ class GltfDocument {
 
   const GlbOptions& options_;
   Eigen::Matrix3d frame_;
+  Eigen::AlignedBox3d box_;  // of every position (pass 1)
   PositionGrid grid_;
   std::vector<NodePrimitives> node_geometry_;  // per SceneNode, in tree order
   std::size_t next_geometry_ = 0;  // pass 2's place in node_geometry_
