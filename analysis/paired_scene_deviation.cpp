@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/knot_vector.hpp"
+
 namespace cadnurbs {
 
 double PairedDeviation::max() const { return std::max({surfaces, boundaries, curves, meshes}); }
@@ -13,9 +15,7 @@ namespace {
 // Parameters over [knots[order-1], knots[count]]: every distinct knot and `per_span` points inside each
 // span, thinned to at most 256.
 std::vector<double> sample_parameters(const std::vector<double>& knots, int order, int count, int per_span) {
-  std::vector<double> distinct;
-  for (int i = order - 1; i <= count; ++i)
-    if (distinct.empty() || knots[i] > distinct.back()) distinct.push_back(knots[i]);
+  const std::vector<double> distinct = domain_breaks(knots, order, count);
   const int spans = std::max<int>(1, static_cast<int>(distinct.size()) - 1);
   const int per = std::max(1, std::min(per_span, 256 / spans));
   std::vector<double> t;
@@ -85,8 +85,10 @@ struct Comparison {
       for (double t : sample_parameters(c->knots, c->order, c->count(), per_span))
         distance(result.curves, wa * curve_point(*c, t), wb * curve_point(d, t));
     } else {
-      const auto& pa = std::holds_alternative<TriangleMesh>(a) ? std::get<TriangleMesh>(a).positions : std::get<PolygonMesh>(a).positions;
-      const auto& pb = std::holds_alternative<TriangleMesh>(b) ? std::get<TriangleMesh>(b).positions : std::get<PolygonMesh>(b).positions;
+      const auto positions = [](const Geometry& g) -> const std::vector<Eigen::Vector3d>& {
+        return std::holds_alternative<TriangleMesh>(g) ? std::get<TriangleMesh>(g).positions : std::get<PolygonMesh>(g).positions;
+      };
+      const auto &pa = positions(a), &pb = positions(b);
       if (pa.size() != pb.size()) differ(where, "vertex counts");
       for (size_t i = 0; i < pa.size(); ++i) distance(result.meshes, wa * pa[i], wb * pb[i]);
     }

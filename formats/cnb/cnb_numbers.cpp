@@ -135,6 +135,13 @@ std::vector<double> read_knots(ByteReader& in, size_t expected_count, KnotCache&
   return knots;
 }
 
+uint64_t read_order(ByteReader& in) {
+  const size_t at = in.offset();
+  const uint64_t order = in.varuint(Field::count);
+  if (order < 2 || order > largest_order) in.fail("order " + std::to_string(order) + " outside 2.." + std::to_string(largest_order), at);
+  return order;
+}
+
 size_t distinct_count(const std::vector<double>& weights) {
   std::vector<double> sorted = weights;
   std::sort(sorted.begin(), sorted.end());

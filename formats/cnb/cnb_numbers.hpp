@@ -49,7 +49,10 @@ std::vector<double> read_weights(ByteReader& in, size_t point_count, WeightCache
 // How many different values `weights` holds.
 size_t distinct_count(const std::vector<double>& weights);
 
-// Orders and control point counts: refused above these before anything is allocated.
+// Orders: refused above this before anything is allocated.
 constexpr uint64_t largest_order = 64;
+// An order (of a surface direction, a curve or a trimming curve); refuses (PayloadError) one outside
+// 2..largest_order.
+uint64_t read_order(ByteReader& in);
 
 }  // namespace cadnurbs::cnb

@@ -41,13 +41,6 @@ uint64_t residual_bits(const std::vector<Cell>& net, int u_count, int v_count, P
   return bits;
 }
 
-uint64_t read_order(ByteReader& in) {
-  const size_t at = in.offset();
-  const uint64_t order = in.varuint(Field::count);
-  if (order < 2 || order > largest_order) in.fail("order " + std::to_string(order) + " outside 2.." + std::to_string(largest_order), at);
-  return order;
-}
-
 // A count of control points that take at least `bytes_each` bytes.
 uint64_t read_point_count(ByteReader& in, size_t bytes_each) {
   const size_t at = in.offset();

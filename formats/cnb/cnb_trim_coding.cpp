@@ -177,9 +177,7 @@ std::vector<TrimLoop> read_trim_loops(ByteReader& in, int exponent, CodingState&
       if (kind == curve_segment) {
         NurbsCurve c;
         c.dimension = 2;
-        const size_t order_at = in.offset();
-        const uint64_t order = in.varuint(Field::count);
-        if (order < 2 || order > largest_order) in.fail("order " + std::to_string(order) + " outside 2.." + std::to_string(largest_order), order_at);
+        const uint64_t order = read_order(in);
         c.order = static_cast<int>(order);
         const size_t n_at = in.offset();
         const size_t n = in.count(2);
