@@ -10,11 +10,19 @@
 
 namespace cadnurbs {
 
-double default_weld_tolerance(const TriangleMesh& mesh) {
-  if (mesh.positions.empty()) return 0;
+namespace {
+
+Eigen::AlignedBox3d positions_box(const TriangleMesh& mesh) {
   Eigen::AlignedBox3d box;
   for (const auto& p : mesh.positions) box.extend(p);
-  return 1e-6 * box.diagonal().norm();
+  return box;
+}
+
+}  // namespace
+
+double default_weld_tolerance(const TriangleMesh& mesh) {
+  if (mesh.positions.empty()) return 0;
+  return 1e-6 * positions_box(mesh).diagonal().norm();
 }
 
 TriangleMesh weld_vertices(const TriangleMesh& mesh, double tolerance, WeldReport* report) {
@@ -22,8 +30,7 @@ TriangleMesh weld_vertices(const TriangleMesh& mesh, double tolerance, WeldRepor
     throw std::invalid_argument("weld_vertices: tolerance must be finite and >= 0, got " + std::to_string(tolerance));
   validate(mesh, "weld_vertices input");
   const size_t n = mesh.positions.size();
-  Eigen::AlignedBox3d box;
-  for (const auto& p : mesh.positions) box.extend(p);
+  const Eigen::AlignedBox3d box = positions_box(mesh);
   const Eigen::Vector3d origin = n ? box.min() : Eigen::Vector3d::Zero();
   // The cell must be at least the tolerance in the rounded arithmetic too: a pair within the tolerance
   // may not end up two cells apart because (p - origin) / cell rounded. The slack covers the rounding

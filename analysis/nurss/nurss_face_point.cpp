@@ -23,7 +23,10 @@ std::vector<double> nurss_corner_factors(const NurssMesh& mesh, NurssFaceId f) {
 }
 
 Eigen::Vector4d nurss_face_point(const NurssMesh& mesh, NurssFaceId f) {
-  const std::vector<double> c = nurss_corner_factors(mesh, f);
+  return nurss_face_point(mesh, f, nurss_corner_factors(mesh, f));
+}
+
+Eigen::Vector4d nurss_face_point(const NurssMesh& mesh, NurssFaceId f, const std::vector<double>& c) {
   const auto& p = mesh.corners(f);
   Eigen::Vector4d v = Eigen::Vector4d::Zero();
   double sum = 0;

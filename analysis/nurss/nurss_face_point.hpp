@@ -25,6 +25,8 @@ std::vector<double> nurss_corner_factors(const NurssMesh& mesh, NurssFaceId f);
 
 // V of face f as a homogeneous point (w·x, w·y, w·z, w).
 Eigen::Vector4d nurss_face_point(const NurssMesh& mesh, NurssFaceId f);
+// The same from f's factors when the caller has them already (nurss_corner_factors(mesh, f)).
+Eigen::Vector4d nurss_face_point(const NurssMesh& mesh, NurssFaceId f, const std::vector<double>& factors);
 
 // (x/w, y/w, z/w) of a homogeneous point.
 inline Eigen::Vector3d euclidean(const Eigen::Vector4d& h) { return h.head<3>() / h.w(); }

@@ -6,6 +6,7 @@
 #include "analysis/nurss/nurss_from_nurbs.hpp"
 #include "analysis/nurss/nurss_limit_mesh.hpp"
 #include "analysis/nurss/nurss_text.hpp"
+#include "analysis/nurss/refine_nurss.hpp"
 #include "core/bounding_box.hpp"
 #include "core/flatten_transforms.hpp"
 #include "core/geometry_error.hpp"
@@ -119,8 +120,11 @@ std::optional<NurssFigures> nurss_figures(const Scene& nurbs, double max_deviati
   out.gzip_bytes = static_cast<long>(gzip(out.text).size());
   out.storage = nurss_storage(mesh);
 
+  // One refinement step per level tried, not `levels` steps from the start each time.
+  NurssMesh refined = mesh;
   for (int levels = 0; levels <= kMostNurssLevels; ++levels) {
-    NurssTriangles limit = nurss_limit_mesh(mesh, levels);
+    if (levels > 0) refined = refine_nurss(refined);
+    NurssTriangles limit = nurss_face_point_mesh(refined);
     const TriangleMesh away = nurss_triangles_with_label(limit, 0);
     if (away.triangles.empty()) continue;  // a coarse net whose every vertex touches an n-gon
     const DeviationMeasure on_body = measure_deviation(away, quadratic);

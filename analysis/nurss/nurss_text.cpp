@@ -78,6 +78,11 @@ class LineReader {
     if (!std::isfinite(value)) fail(what + " " + std::string(word) + " is not finite");
     return value;
   }
+  double interval_in(std::string_view word) const {
+    const double d = number_in(word, "knot interval");
+    if (d < 0) fail("knot interval " + std::string(word) + " is negative");
+    return d;
+  }
   long count_in(std::string_view word, const std::string& what) const {
     long value = -1;
     const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
@@ -224,9 +229,7 @@ NurssMesh read_nurss_text(const std::string& text, const std::string& name, Leng
       in.fail("face " + std::to_string(f) + " has " + std::to_string(c.size()) + " corners but " +
               std::to_string(w.size()) + " intervals");
     for (size_t k = 0; k < c.size(); ++k) {
-      const double d = in.number_in(w[k], "knot interval");
-      if (d < 0) in.fail("knot interval " + std::string(w[k]) + " is negative");
-      mesh.set_interval(c[k], c[(k + 1) % c.size()], d);
+      mesh.set_interval(c[k], c[(k + 1) % c.size()], in.interval_in(w[k]));
     }
   }
   const long open_sides = in.section("open-sides");
@@ -238,9 +241,7 @@ NurssMesh read_nurss_text(const std::string& text, const std::string& name, Leng
     const NurssVertexId from(static_cast<int>(a)), to(static_cast<int>(b));
     if (!mesh.find_edge(from, to) || side_has_face(mesh, from, to) || !std::isnan(mesh.interval(from, to)))
       in.fail("side " + std::to_string(a) + "->" + std::to_string(b) + " is no open side, or is given twice");
-    const double d = in.number_in(w[2], "knot interval");
-    if (d < 0) in.fail("knot interval " + std::string(w[2]) + " is negative");
-    mesh.set_interval(from, to, d);
+    mesh.set_interval(from, to, in.interval_in(w[2]));
   }
   if (in.left() > 0) {
     in.skip();

@@ -28,7 +28,7 @@ std::vector<Eigen::Vector4d> face_corner_points(const NurssMesh& mesh, NurssFace
   for (double ck : c) sum += ck;
   std::vector<Eigen::Vector4d> x(n);
   for (int k = 0; k < n; ++k) x[k] = mesh.homogeneous(p[k]);
-  const Eigen::Vector4d v = nurss_face_point(mesh, f);
+  const Eigen::Vector4d v = nurss_face_point(mesh, f, c);
   std::vector<Eigen::Vector4d> out(n);
   for (int i = 0; i < n; ++i) {
     Eigen::Vector4d ring = -n * x[i];
