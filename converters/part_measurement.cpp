@@ -101,11 +101,12 @@ class Folder {
   fs::path path_;
 };
 
-// Size of the file and of its gzip'd form.
-void measure_bytes(const fs::path& path, RepresentationFigures& figures) {
-  const std::string bytes = read_file(path.string());
+// Size of the file and of its gzip'd form; returns the file's bytes for the reader that reads it back.
+std::string measure_bytes(const fs::path& path, RepresentationFigures& figures) {
+  std::string bytes = read_file(path.string());
   figures.bytes = static_cast<long>(bytes.size());
   figures.gzip_bytes = is_gzip(bytes) ? figures.bytes : static_cast<long>(gzip(bytes).size());
+  return bytes;
 }
 
 // The mesh a mesh file holds, welded (shared vertices counted once, as an indexed mesh stores them).
@@ -129,12 +130,15 @@ void count_mesh_file(const Scene& read_back, bool soup, RepresentationFigures& f
   });
 }
 
-RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, const Scene& nurbs) {
+// `as_read` gets the file's triangles in world coordinates, unwelded.
+RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, const Scene& nurbs,
+                                   TriangleMesh& as_read) {
   RepresentationFigures f{file.key, file.label, RepresentationKind::mesh, 0, 0, 0, 0, 0, ""};
   measure_bytes(path, f);
   const Scene read_back = read_scene(path.string());
   count_mesh_file(read_back, std::string(file.extension) == ".stl", f);
-  f.deviation = measure_deviation(scene_triangles(read_back), nurbs).overall.max;
+  as_read = scene_triangles(read_back);
+  f.deviation = measure_deviation(as_read, nurbs).overall.max;
   f.deviation_basis = "measured after read-back (two-sided, sampled)";
   return f;
 }
@@ -145,11 +149,9 @@ void add_compact_binary(PartRecord& record, const Scene& compact, const Folder& 
   const fs::path path = folder.file(stem + "-compact", ".cnb");
   CnbOptions options;
   options.max_deviation = record.deviation;
-  CnbWriteReport written;
-  write_file_atomically(path.string(), write_cnb(compact, options, &written));
+  write_file_atomically(path.string(), write_cnb(compact, options));
   RepresentationFigures f{"cnb", "cadnurbs binary NURBS (.cnb) within D", RepresentationKind::nurbs, 0, 0, 0, 0, 0, ""};
-  measure_bytes(path, f);
-  const Scene decoded = read_cnb(read_file(path.string()), path.string());
+  const Scene decoded = read_cnb(measure_bytes(path, f), path.string());
   const NurbsStorage storage = nurbs_storage(decoded);
   f.floats = storage.total_floats();
   f.integers = storage.polygon_corners;
@@ -163,14 +165,12 @@ void add_compact_binary(PartRecord& record, const Scene& compact, const Folder& 
 // back, and its limit mesh at the fewest levels within D away from the n-gons, written as an
 // IndexedFaceSet to look at; the deviation given is the whole limit mesh's, measured against the NURBS.
 void add_nurss(PartRecord& record, const Scene& scene, const Folder& folder, const std::string& stem) {
-  std::string why_not;
-  const auto figures = nurss_figures(scene, record.deviation, &why_not);
+  const auto figures = nurss_figures(scene, record.deviation);
   if (!figures) return;  // not a part of quadratic nets: no NURSS row
   const fs::path path = folder.file(stem, ".nurss");
   write_file_atomically(path.string(), figures->text);
   RepresentationFigures f{"nurss", "quadratic NURSS control mesh (.nurss)", RepresentationKind::nurss, 0, 0, 0, 0, 0, ""};
-  measure_bytes(path, f);
-  const NurssStorage storage = nurss_storage(read_nurss_text(read_file(path.string()), path.string()));
+  const NurssStorage storage = nurss_storage(read_nurss_text(measure_bytes(path, f), path.string()));
   f.floats = storage.floats;
   f.integers = storage.connectivity_integers;
   f.deviation = figures->whole.overall.max;
@@ -205,8 +205,7 @@ void add_encoded_meshes(PartRecord& record, const Scene& faces, const Folder& fo
     const fs::path path = folder.file(stem + "-mesh", file.extension);
     write_file_atomically(path.string(), encoded[i].bytes);
     RepresentationFigures f{file.key, file.label, RepresentationKind::mesh, 0, 0, 0, 0, 0, ""};
-    measure_bytes(path, f);
-    const TriangleMesh decoded = file.decode(read_file(path.string()), path.string());
+    const TriangleMesh decoded = file.decode(measure_bytes(path, f), path.string());
     const MeshStorage storage = mesh_storage(decoded);
     f.floats = storage.indexed_floats;
     f.integers = storage.indexed_integers;
@@ -315,9 +314,11 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
   for (const auto& file : kMeshFiles) {
     const fs::path path = folder.file(stem + "-mesh", file.extension);
     write_scene(path.string(), meshed.meshes, write_options);
-    record.representations.push_back(mesh_figures(file, path, scene));
+    TriangleMesh as_read;
+    record.representations.push_back(mesh_figures(file, path, scene, as_read));
+    // The indexed figures: the first file's mesh (the IndexedFaceSet) with its shared vertices welded.
+    if (&file == &kMeshFiles[0]) record.mesh = mesh_storage(weld_exact(as_read));
   }
-  record.mesh = mesh_storage(read_back_mesh(folder.file(stem + "-mesh", ".wrl")));
   add_encoded_meshes(record, meshed.sewn ? meshed.faces : scene, folder, stem);
   if (views) {
     views->nurbs_x3dv = read_file(folder.file(stem + "-compact", ".x3dv").string());

@@ -142,16 +142,19 @@ std::string report_csv(const std::vector<PartRecord>& records) {
   for (const auto& r : records)
     for (const auto& f : r.representations)
       if (std::find(keys.begin(), keys.end(), f.key) == keys.end()) keys.push_back(f.key);
+  std::string header =
+      "input,status,error,unit,diagonal,deviation,control_points,knots,nurbs_floats,trim_floats,polygon_floats,"
+      "mesh_vertices,mesh_triangles,mesh_indexed_floats,mesh_indexed_integers,mesh_soup_floats,"
+      "mesh_certified_deviation";
+  for (const auto& k : keys) header += "," + k + ".bytes," + k + ".gzip_bytes," + k + ".deviation";
+  // A failed part fills the columns after its error with empty fields.
+  const auto columns_after_error = std::count(header.begin(), header.end(), ',') - 2;
   std::ostringstream out;
-  out << "input,status,error,unit,diagonal,deviation,control_points,knots,nurbs_floats,trim_floats,polygon_floats,"
-         "mesh_vertices,mesh_triangles,mesh_indexed_floats,mesh_indexed_integers,mesh_soup_floats,"
-         "mesh_certified_deviation";
-  for (const auto& k : keys) out << "," << k << ".bytes," << k << ".gzip_bytes," << k << ".deviation";
-  out << "\n" << std::setprecision(8);
+  out << header << "\n" << std::setprecision(8);
   for (const auto& r : records) {
     out << csv_field(r.input) << "," << (r.failed ? "failed" : "ok") << "," << csv_field(r.error);
     if (r.failed) {
-      out << std::string(14 + 3 * keys.size(), ',') << "\n";
+      out << std::string(columns_after_error, ',') << "\n";
       continue;
     }
     out << "," << r.unit << "," << r.diagonal << "," << r.deviation << "," << r.nurbs.control_points << ","

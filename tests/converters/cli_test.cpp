@@ -11,36 +11,15 @@
 #include "converters/file_formats.hpp"
 #include "formats/common/file_io.hpp"
 #include "samples/capping_shapes.hpp"
+#include "command_fixture.hpp"
 
 namespace fs = std::filesystem;
 using namespace cadnurbs;
 
 namespace {
 
-struct CommandResult {
-  int status;
-  std::string out, err;
-};
-
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cadnurbs_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CommandResult run(const std::string& arguments, const std::string& environment = "") {
-    const std::string out = (dir_ / "stdout.txt").string(), err = (dir_ / "stderr.txt").string();
-    const int status =
-        std::system((environment + CADNURBS_EXE + " " + arguments + " >" + out + " 2>" + err).c_str());
-    return {WEXITSTATUS(status), read_file(out), read_file(err)};
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
+using test::CommandResult;
+class Cli : public test::CommandTest {};
 
 }  // namespace
 

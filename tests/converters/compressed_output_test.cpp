@@ -10,28 +10,19 @@
 #include "converters/file_formats.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/draco/draco_mesh_codec.hpp"
+#include "command_fixture.hpp"
 
 namespace fs = std::filesystem;
 using namespace cadnurbs;
 
 namespace {
 
-class CompressedOutput : public ::testing::Test {
+class CompressedOutput : public test::CommandTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cadnurbs_compressed_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  // `cadnurbs convert IN -o OUT OPTIONS`; its exit status (stderr in stderr.txt).
   int convert(const std::string& in, const std::string& out, const std::string& options) {
-    const std::string command = std::string(CADNURBS_EXE) + " convert " + in + " -o " + path(out) + " " + options +
-                                " >" + path("out.txt") + " 2>" + path("err.txt");
-    return WEXITSTATUS(std::system(command.c_str()));
+    return run("convert " + in + " -o " + path(out) + " " + options).status;
   }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
 };
 
 const std::string kCapping = std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-90.step";
@@ -39,7 +30,7 @@ const std::string kCapping = std::string(CADNURBS_SOURCE_DIR) + "/samples/cappin
 }  // namespace
 
 TEST_F(CompressedOutput, ADracoFileDecodesWithinTheDeviation) {
-  ASSERT_EQ(convert(kCapping, "c.drc", "--deviation 0.1"), 0) << read_file(path("err.txt"));
+  ASSERT_EQ(convert(kCapping, "c.drc", "--deviation 0.1"), 0) << read_file(path("stderr.txt"));
   const TriangleMesh decoded = decode_draco_mesh(read_file(path("c.drc")), "c.drc");
   const DeviationMeasure d = measure_deviation(decoded, read_scene(kCapping));
   EXPECT_LE(d.overall.max, 0.1);
@@ -51,7 +42,7 @@ TEST_F(CompressedOutput, GlbFilesAreglTFAndCompressionMakesThemSmaller) {
   for (const char* compress : {"none", "draco", "meshopt"}) {
     const std::string out = std::string("c-") + compress + ".glb";
     ASSERT_EQ(convert(kCapping, out, std::string("--deviation 0.1 --compress ") + compress), 0)
-        << read_file(path("err.txt"));
+        << read_file(path("stderr.txt"));
     EXPECT_EQ(read_file(path(out)).substr(0, 4), "glTF");
     size[compress] = fs::file_size(path(out));
   }
@@ -61,18 +52,18 @@ TEST_F(CompressedOutput, GlbFilesAreglTFAndCompressionMakesThemSmaller) {
 
 TEST_F(CompressedOutput, CompressIsRefusedForOtherFormatsAndUnknownMethods) {
   EXPECT_EQ(convert(kCapping, "c.stl", "--compress draco"), 2);
-  EXPECT_NE(read_file(path("err.txt")).find("--compress applies to .glb output only"), std::string::npos);
+  EXPECT_NE(read_file(path("stderr.txt")).find("--compress applies to .glb output only"), std::string::npos);
   EXPECT_EQ(convert(kCapping, "c.glb", "--compress zip"), 1);
-  EXPECT_NE(read_file(path("err.txt")).find("c.glb: unknown --compress 'zip' (none, draco, meshopt)"), std::string::npos)
-      << read_file(path("err.txt"));
+  EXPECT_NE(read_file(path("stderr.txt")).find("c.glb: unknown --compress 'zip' (none, draco, meshopt)"), std::string::npos)
+      << read_file(path("stderr.txt"));
   EXPECT_FALSE(fs::exists(path("c.glb")));
 }
 
 TEST_F(CompressedOutput, ConvertWritesAndReadsCompactBinaryNurbs) {
   const std::string in = std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-90.x3dv";
-  ASSERT_EQ(convert(in, "c.cnb", "--deviation 0.01"), 0) << read_file(path("err.txt"));
+  ASSERT_EQ(convert(in, "c.cnb", "--deviation 0.01"), 0) << read_file(path("stderr.txt"));
   EXPECT_LT(fs::file_size(path("c.cnb")), fs::file_size(in) / 4);
-  ASSERT_EQ(convert(path("c.cnb"), "back.x3dv", ""), 0) << read_file(path("err.txt"));
+  ASSERT_EQ(convert(path("c.cnb"), "back.x3dv", ""), 0) << read_file(path("stderr.txt"));
   const Scene original = read_scene(in), back = read_scene(path("back.x3dv"));
   const SceneCounts a = count_entities(original), b = count_entities(back);
   EXPECT_EQ(a.surfaces, b.surfaces);

@@ -14,6 +14,7 @@
 #include "../analysis/analysis_shapes.hpp"
 #include "converters/file_formats.hpp"
 #include "formats/common/file_io.hpp"
+#include "command_fixture.hpp"
 
 namespace fs = std::filesystem;
 using namespace cadnurbs;
@@ -21,28 +22,8 @@ using Json = nlohmann::json;
 
 namespace {
 
-struct CommandResult {
-  int status;
-  std::string out, err;
-};
-
-class Report : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cadnurbs_report_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  CommandResult run(const std::string& arguments) {
-    const std::string out = path("stdout.txt"), err = path("stderr.txt");
-    const int status = std::system((std::string(CADNURBS_EXE) + " " + arguments + " >" + out + " 2>" + err).c_str());
-    return {WEXITSTATUS(status), read_file(out), read_file(err)};
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
+using test::CommandResult;
+class Report : public test::CommandTest {};
 
 // The numbers between "FIELD [" and "]" of every occurrence of FIELD in `text`, one list per occurrence.
 std::vector<std::vector<double>> number_lists(const std::string& text, const std::string& field) {
