@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "analysis/mesh_encoding.hpp"
 #include "analysis/tessellation_hints.hpp"
 #include "analysis/weld_exact.hpp"
 #include "core/bounding_box.hpp"
@@ -119,19 +120,14 @@ void write_as_glb(const std::string& path, const Scene& scene, const SceneWriteO
 }
 
 // Draco's own mesh file: all faces as one mesh in world coordinates, welded, positions on the coarsest
-// grid that moves no vertex by more than the budget (Draco's quantisation replayed exactly).
+// grid that moves no vertex by more than the budget and collapses no triangle (analysis/mesh_encoding's
+// rule, Draco's quantisation replayed exactly).
 void write_as_drc(const std::string& path, const Scene& scene, const SceneWriteOptions& options) {
   const TriangleMesh mesh = weld_exact(flatten_meshes(scene, path));
   int bits = 14;
   if (options.quantisation_budget > 0) {
-    for (bits = kCoarsestBits; bits <= 30; ++bits) {
-      const auto quantised = draco_quantised_positions(mesh, bits);
-      double largest = 0;
-      for (std::size_t i = 0; i < quantised.size(); ++i)
-        largest = std::max(largest, (quantised[i] - mesh.positions[i]).norm());
-      if (largest <= options.quantisation_budget) break;
-    }
-    if (bits > 30) throw FileError(path + ": 30-bit positions still move by more than the allowed deviation");
+    bits = coarsest_quantisation(mesh, MeshCodec::draco, options.quantisation_budget).bits;
+    if (bits == 0) throw FileError(path + ": no Draco quantisation keeps the mesh within the allowed deviation");
   }
   write_file_atomically(path, encode_draco_mesh(mesh, bits, 0));
 }
