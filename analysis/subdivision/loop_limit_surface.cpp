@@ -1,0 +1,66 @@
+#include "analysis/subdivision/loop_limit_surface.hpp"
+
+#include <stdexcept>
+
+namespace cadnurbs {
+
+LoopStencils loop_limit_stencils(const LoopTopology& level) {
+  const LoopEdges edges = loop_edges(level);
+  const int nv = level.vertex_count;
+  std::vector<Eigen::Triplet<double>> weights;
+  weights.reserve(static_cast<size_t>(nv) * 7);
+  for (int v = 0; v < nv; ++v) {
+    const auto& at = edges.vertex_edges[v];
+    switch (edges.vertex_kind[v]) {
+      case LoopVertexKind::corner:
+        weights.emplace_back(v, v, 1.0);
+        break;
+      case LoopVertexKind::crease:
+        weights.emplace_back(v, v, 2.0 / 3.0);
+        for (const int e : at)
+          if (edges.sharp[e]) weights.emplace_back(v, other_end(edges, e, v), 1.0 / 6.0);
+        break;
+      case LoopVertexKind::smooth:
+      case LoopVertexKind::dart: {
+        const int n = static_cast<int>(at.size());
+        const double w = 1.0 / (3.0 / (8.0 * loop_beta(n)) + n);
+        weights.emplace_back(v, v, 1.0 - n * w);
+        for (const int e : at) weights.emplace_back(v, other_end(edges, e, v), w);
+        break;
+      }
+    }
+  }
+  LoopStencils out(nv, nv);
+  out.setFromTriplets(weights.begin(), weights.end());
+  return out;
+}
+
+LoopLimitMesh loop_limit_mesh(const LoopTopology& control, int levels) {
+  if (levels < 0 || levels > 8) throw std::invalid_argument("loop_limit_mesh: levels must be 0 to 8");
+  LoopLimitMesh out;
+  out.level = control;
+  LoopStencils to_level(control.vertex_count, control.vertex_count);
+  to_level.setIdentity();
+  for (int k = 0; k < levels; ++k) {
+    LoopRefinement step = refine_loop(out.level);
+    to_level = (step.stencils * to_level).pruned();
+    out.level = std::move(step.fine);
+  }
+  out.limit_from_control = (loop_limit_stencils(out.level) * to_level).pruned();
+  return out;
+}
+
+TriangleMesh evaluate_limit_mesh(const LoopLimitMesh& limit, const std::vector<Eigen::Vector3d>& control_points) {
+  if (static_cast<long>(control_points.size()) != limit.limit_from_control.cols())
+    throw std::invalid_argument("evaluate_limit_mesh: control point count does not match the mesh");
+  Eigen::MatrixX3d x(control_points.size(), 3);
+  for (size_t i = 0; i < control_points.size(); ++i) x.row(i) = control_points[i].transpose();
+  const Eigen::MatrixX3d p = limit.limit_from_control * x;
+  TriangleMesh out;
+  out.positions.resize(p.rows());
+  for (long i = 0; i < p.rows(); ++i) out.positions[i] = p.row(i).transpose();
+  out.triangles = limit.level.triangles;
+  return out;
+}
+
+}  // namespace cadnurbs

@@ -1,0 +1,36 @@
+#pragma once
+// One step of Loop subdivision with sharp features (Loop 1987; crease, corner and dart rules of
+// Hoppe et al. 1994, section 3.2; seed 001, Fig. 2.10), as a linear map from the coarse vertices to
+// the fine ones. Refinement is topology plus stencils; positions are applied by the caller, so a
+// fitting can differentiate through it (the map does not depend on positions).
+#include <Eigen/SparseCore>
+
+#include "analysis/subdivision/loop_edges.hpp"
+
+namespace cadnurbs {
+
+// Rows: fine vertices; columns: coarse vertices; each row sums to 1.
+using LoopStencils = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+struct LoopRefinement {
+  LoopTopology fine;     // the coarse vertices keep their numbers; edge e's new vertex is vertex_count + e
+  LoopStencils stencils;
+};
+
+// Takes one level's topology; returns the next level. Triangle t = (a, b, c) with new edge vertices
+// m0 (a-b), m1 (b-c), m2 (c-a) becomes triangles 4t..4t+3 = (a, m0, m2), (m0, b, m1), (m2, m1, c),
+// (m0, m1, m2), so triangle T of level k lies in control triangle T >> 2k. Tagged creases split in
+// two tagged halves, tagged corners stay tagged; boundary and non-manifold edges stay sharp by
+// themselves.
+// Rules (n = edges at the vertex, beta = (5/8 - (3/8 + cos(2 pi / n) / 4)^2) / n, Loop's):
+// - smooth edge (two faces, untagged): 3/8 each end, 1/8 each opposite vertex; sharp edge: 1/2, 1/2;
+// - smooth or dart vertex: 1 - n beta itself, beta each neighbour; crease vertex: 3/4 itself, 1/8 each
+//   neighbour along a sharp edge (so a crease refines as a uniform cubic B-spline of its vertices,
+//   independently of the faces beside it); corner: itself.
+// Refuses what loop_edges refuses.
+LoopRefinement refine_loop(const LoopTopology& coarse);
+
+// Loop's beta for a vertex with n edges (n >= 1).
+double loop_beta(int n);
+
+}  // namespace cadnurbs
