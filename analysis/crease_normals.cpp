@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <tuple>
 
+#include "analysis/edge_sides.hpp"
 #include "core/union_find.hpp"
 
 namespace cadnurbs {
@@ -34,33 +34,19 @@ TriangleMesh with_crease_normals(const TriangleMesh& welded, double crease_angle
     face[t] = length > 0 ? Eigen::Vector3d(n / length) : Eigen::Vector3d::Zero();
   }
 
-  // Sides sorted by their undirected edge: O(n log n), and no hash of vertex pairs to tune.
-  std::vector<std::tuple<int, int, int, int>> sides;  // low vertex, high vertex, triangle, corner where it starts
-  sides.reserve(3 * nt);
-  for (size_t t = 0; t < nt; ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int a = T[t][k], b = T[t][(k + 1) % 3];
-      sides.emplace_back(std::min(a, b), std::max(a, b), static_cast<int>(t), k);
-    }
-  std::sort(sides.begin(), sides.end());
-
   CreaseNormalsReport r;
   UnionFind groups(3 * nt);
-  for (size_t i = 0; i < sides.size();) {
-    size_t j = i;
-    while (j < sides.size() && std::get<0>(sides[j]) == std::get<0>(sides[i]) &&
-           std::get<1>(sides[j]) == std::get<1>(sides[i]))
-      ++j;
-    const size_t count = j - i;
+  const EdgeSides edges = edge_sides(welded);
+  for (std::size_t e = 0; e < edges.edge_count(); ++e) {
+    const int count = edges.first[e + 1] - edges.first[e];
     if (count == 1) {
       ++r.boundary_edges;
     } else if (count > 2) {
       ++r.non_manifold_edges;
     } else {
-      const auto [low, high, t1, k1] = sides[i];
-      const auto [low2, high2, t2, k2] = sides[i + 1];
-      const bool forward1 = T[t1][k1] == low, forward2 = T[t2][k2] == low;
-      if (forward1 == forward2) {
+      const int s1 = edges.sides[edges.first[e]], s2 = edges.sides[edges.first[e] + 1];
+      const int t1 = s1 / 3, t2 = s2 / 3;
+      if (side_from(welded, s1) == side_from(welded, s2)) {
         ++r.inconsistent_edges;
       } else if (face[t1].squaredNorm() == 0 || face[t2].squaredNorm() == 0) {
         ++r.sharp_edges;  // a zero-area face has no direction to be smooth with
@@ -69,18 +55,15 @@ TriangleMesh with_crease_normals(const TriangleMesh& welded, double crease_angle
         const double angle = std::atan2(face[t1].cross(face[t2]).norm(), face[t1].dot(face[t2]));
         if (angle < crease_angle_radians) {
           ++r.smooth_edges;
-          // Corner of t1 at vertex v joins corner of t2 at v, for both ends of the edge.
-          for (int v : {low, high}) {
-            const int c1 = static_cast<int>(std::find(T[t1].begin(), T[t1].end(), v) - T[t1].begin());
-            const int c2 = static_cast<int>(std::find(T[t2].begin(), T[t2].end(), v) - T[t2].begin());
-            groups.unite(3 * t1 + c1, 3 * t2 + c2);
-          }
+          // The corner of t1 at each end of the edge joins t2's corner there; t2 runs the edge the other
+          // way, so its side's end is t1's side's start.
+          groups.unite(s1, 3 * t2 + (s2 % 3 + 1) % 3);
+          groups.unite(3 * t1 + (s1 % 3 + 1) % 3, s2);
         } else {
           ++r.sharp_edges;
         }
       }
     }
-    i = j;
   }
 
   std::vector<Eigen::Vector3d> sum(3 * nt, Eigen::Vector3d::Zero());

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "analysis/crease_normals.hpp"
+#include "analysis/orient_faces.hpp"
 #include "analysis/scene_triangles.hpp"
 #include "analysis/weld_vertices.hpp"
 #include "converters/arguments.hpp"
@@ -17,10 +18,11 @@ namespace {
 const char* kHelp =
     "usage: cadnurbs normals IN.stl -o OUT [--crease-angle DEG] [--weld TOL]\n"
     "Welds the triangles of IN (vertices closer than TOL become one; default 1e-6 of the bounding-box\n"
-    "diagonal), drops the triangles that collapse, and gives every corner a normal: faces joined by an\n"
-    "edge whose dihedral angle is below the crease angle (default 30 degrees) share one normal (angle-\n"
-    "weighted), faces across a sharper edge do not (VRML's creaseAngle). OUT: .wrl .x3dv .x3d (an\n"
-    "IndexedFaceSet with normal and normalIndex), .ply .obj (vertices split where normals differ).\n";
+    "diagonal), drops collapsed and duplicate triangles, orients the faces consistently (closed parts\n"
+    "outward) and gives every corner a normal: faces joined by an edge whose dihedral angle is below the\n"
+    "crease angle (default 30 degrees) share one normal (angle-weighted), faces across a sharper edge do\n"
+    "not (VRML's creaseAngle). OUT: .wrl .x3dv .x3d (an IndexedFaceSet with normal and normalIndex),\n"
+    ".ply .obj (vertices split where normals differ).\n";
 
 constexpr double kDefaultCreaseDegrees = 30.0;
 
@@ -47,9 +49,10 @@ int run_normals(const std::vector<std::string>& args) {
   if (triangles.triangles.empty()) throw FileError(in + ": no triangles to give normals to");
   WeldReport weld;
   const double tol = a.has("weld") ? tolerance : default_weld_tolerance(triangles);
-  const TriangleMesh welded = weld_vertices(triangles, tol, &weld);
+  OrientReport orient;
+  const TriangleMesh oriented = orient_faces(weld_vertices(triangles, tol, &weld), &orient);
   CreaseNormalsReport creases;
-  const TriangleMesh shaded = with_crease_normals(welded, degrees * M_PI / 180.0, &creases);
+  const TriangleMesh shaded = with_crease_normals(oriented, degrees * M_PI / 180.0, &creases);
 
   Scene result;
   result.unit = scene.unit;
@@ -63,11 +66,14 @@ int run_normals(const std::vector<std::string>& args) {
             << weld.output_vertices << " vertices (largest move " << weld.largest_merge_distance << "), "
             << weld.collapsed_triangles << " collapsed and " << weld.zero_area_triangles
             << " zero-area triangles dropped\n"
+            << in << ": " << orient.components << (orient.components == 1 ? " component (" : " components (")
+            << orient.closed_components << " closed), " << orient.flipped_triangles << " triangles flipped, "
+            << orient.duplicate_triangles << " duplicates dropped, " << orient.non_orientable_components
+            << " non-orientable (" << orient.inconsistent_edges << " edges left inconsistent), "
+            << orient.non_manifold_edges << " non-manifold and " << orient.boundary_edges << " boundary edges\n"
             << out << ": " << shaded.triangles.size() << " triangles, " << creases.distinct_normals
             << " distinct corner normals at a crease angle of " << degrees << " degrees (" << creases.smooth_edges
-            << " smooth, " << creases.sharp_edges << " sharp, " << creases.boundary_edges << " boundary, "
-            << creases.non_manifold_edges << " non-manifold, " << creases.inconsistent_edges
-            << " inconsistently oriented edges)\n";
+            << " smooth, " << creases.sharp_edges << " sharp edges)\n";
   return 0;
 }
 

@@ -101,6 +101,10 @@ FileError binary_size_error(const std::string& bytes, const std::string& name) {
                      std::to_string(size) + " bytes, the header alone is 84)");
   const std::uint32_t count = read_u32le(bytes.data() + 80);
   const std::uint64_t expected = binary_size(count);
+  if (size < expected && (size - kHeaderBytes) % kFacetBytes == 0)  // whole triangles, fewer than the count
+    return FileError(name + ": binary STL header counts " + std::to_string(count) + " triangles but the file holds " +
+                     std::to_string((size - kHeaderBytes) / kFacetBytes) + " (the file should be " +
+                     std::to_string(expected) + " bytes, it is " + std::to_string(size) + ")");
   if (size < expected) {
     const std::uint64_t triangle = (size - kHeaderBytes) / kFacetBytes + 1;
     return FileError(name + ": binary STL truncated at byte " + std::to_string(size) + ": triangle " +

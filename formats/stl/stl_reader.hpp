@@ -21,7 +21,8 @@ TriangleMesh read_stl(const std::string& path);
 //   otherwise three copies of each facet's normal, normalized; a facet whose normal is zero or not
 //   finite gets facet_normal() of its corners instead (zero when degenerate).
 // Refuses (FileError "<name>: <position>: <problem>", one line): an empty file; a truncated binary
-// file (byte offset and triangle number); a binary size mismatch that is not ASCII STL either
+// file (byte offset and triangle number); a binary file holding whole triangles but fewer than its
+// count (both numbers); a binary size mismatch that is not ASCII STL either
 // (the size it should have); an ASCII syntax error (line, facet number, expected and found
 // token); a non-finite coordinate (triangle or facet number).
 TriangleMesh parse_stl(const std::string& bytes, const std::string& name_for_errors);
