@@ -14,8 +14,9 @@ struct CreaseNormalsReport {
   int inconsistent_edges = 0;  // two faces running the edge the same way (orientation flips there)
 };
 
-// Takes a welded mesh (shared vertices; see weld_vertices) and a crease angle in radians; returns the
-// same positions and triangles with corner_normals replaced (three per triangle, unit length).
+// Takes a welded mesh (shared vertices; see weld_vertices; by value, so that a caller done with it can
+// std::move it in) and a crease angle in radians; returns the same positions and triangles with
+// corner_normals replaced (three per triangle, unit length).
 // Around each vertex, two faces that share an edge are joined when the angle between their face
 // normals is below the crease angle; joins chain around the vertex, and each chain of corners gets
 // one normal: the sum of its faces' unit normals weighted by the corner angles, normalised (weighting
@@ -25,7 +26,7 @@ struct CreaseNormalsReport {
 // in VRML97 and X3D; orientation is another step's job). A zero-area triangle joins nothing and keeps
 // a zero normal; a chain whose weighted sum cancels gets each corner's own face normal.
 // Refuses (std::invalid_argument) a negative or non-finite angle; validate()s the mesh.
-TriangleMesh with_crease_normals(const TriangleMesh& welded, double crease_angle_radians,
+TriangleMesh with_crease_normals(TriangleMesh welded, double crease_angle_radians,
                                  CreaseNormalsReport* report = nullptr);
 
 }  // namespace cadnurbs

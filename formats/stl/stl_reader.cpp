@@ -1,14 +1,18 @@
 #include "formats/stl/stl_reader.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <fstream>
 #include <string_view>
 #include <vector>
 
+#include "core/equal_points.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/stl/facet_normal.hpp"
 
@@ -26,36 +30,50 @@ bool is_supplied(const Eigen::Vector3d& normal) { return normal.allFinite() && (
 // Collects facets in file order and applies the corner-normal rule of parse_stl.
 class MeshBuilder {
  public:
+  explicit MeshBuilder(StlReadOptions options) : options_(options) {}
+
   void reserve(std::size_t facets) {
-    mesh_.positions.reserve(3 * facets);
+    if (options_.merge_equal_points)
+      equal_.reserve(facets / 2 + 3);  // a closed surface of F triangles has about F / 2 vertices
+    else
+      mesh_.positions.reserve(3 * facets);
     mesh_.triangles.reserve(facets);
-    normals_.reserve(facets);
+    if (options_.facet_normals) normals_.reserve(facets);
   }
 
   void add(const Eigen::Vector3d& normal, const Corners& corners) {
-    const int first = static_cast<int>(mesh_.positions.size());
-    mesh_.positions.insert(mesh_.positions.end(), corners.begin(), corners.end());
-    mesh_.triangles.push_back({first, first + 1, first + 2});
+    if (options_.merge_equal_points) {
+      mesh_.triangles.push_back({equal_.add(corners[0]), equal_.add(corners[1]), equal_.add(corners[2])});
+    } else {
+      const int first = static_cast<int>(mesh_.positions.size());
+      mesh_.positions.insert(mesh_.positions.end(), corners.begin(), corners.end());
+      mesh_.triangles.push_back({first, first + 1, first + 2});
+    }
+    if (!options_.facet_normals) return;
     normals_.push_back(normal);
     if (is_supplied(normal)) any_normal_ = true;
   }
 
   TriangleMesh finish() && {
+    if (options_.merge_equal_points) mesh_.positions = std::move(equal_).take_points();
     if (!any_normal_) return std::move(mesh_);
     mesh_.corner_normals.reserve(3 * normals_.size());
     for (std::size_t t = 0; t < normals_.size(); ++t) {
       const Eigen::Vector3d& n = normals_[t];
       const Eigen::Vector3d unit = is_supplied(n)
                                        ? Eigen::Vector3d(n.normalized())
-                                       : facet_normal(mesh_.positions[3 * t], mesh_.positions[3 * t + 1],
-                                                      mesh_.positions[3 * t + 2]);
+                                       : facet_normal(mesh_.positions[mesh_.triangles[t][0]],
+                                                      mesh_.positions[mesh_.triangles[t][1]],
+                                                      mesh_.positions[mesh_.triangles[t][2]]);
       mesh_.corner_normals.insert(mesh_.corner_normals.end(), 3, unit);
     }
     return std::move(mesh_);
   }
 
  private:
+  StlReadOptions options_;
   TriangleMesh mesh_;
+  EqualPoints equal_;  // with merge_equal_points
   std::vector<Eigen::Vector3d> normals_;
   bool any_normal_ = false;
 };
@@ -75,22 +93,21 @@ Eigen::Vector3d read_vec3(const char* p) {
 
 std::uint64_t binary_size(std::uint32_t count) { return kHeaderBytes + kFacetBytes * count; }
 
-// Parses a binary STL whose size has been checked to be binary_size(count).
-TriangleMesh parse_binary(const std::string& bytes, const std::string& name) {
-  const std::uint32_t count = read_u32le(bytes.data() + 80);
-  MeshBuilder builder;
-  builder.reserve(count);
-  for (std::uint64_t t = 0; t < count; ++t) {
-    const char* facet = bytes.data() + kHeaderBytes + kFacetBytes * t;
+// Adds `count` facets of a binary STL file whose size has been checked to be binary_size(total), those
+// from triangle `first` (0-based) on, held at `facets`.
+void add_binary_facets(const char* facets, std::uint64_t first, std::uint64_t count, std::uint32_t total,
+                       const std::string& name, MeshBuilder& builder) {
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const char* facet = facets + kFacetBytes * i;
+    const std::uint64_t t = first + i;
     const Corners corners = {read_vec3(facet + 12), read_vec3(facet + 24), read_vec3(facet + 36)};
     for (int k = 0; k < 3; ++k)
       if (!corners[k].allFinite())
-        throw FileError(name + ": byte " + std::to_string(facet + 12 + 12 * k - bytes.data()) + ": vertex " +
+        throw FileError(name + ": byte " + std::to_string(kHeaderBytes + kFacetBytes * t + 12 + 12 * k) + ": vertex " +
                         std::to_string(k + 1) + " of triangle " + std::to_string(t + 1) + " of " +
-                        std::to_string(count) + " is not finite");
+                        std::to_string(total) + " is not finite");
     builder.add(read_vec3(facet), corners);
   }
-  return std::move(builder).finish();
 }
 
 // The error for a file that is neither ASCII STL nor a binary STL of the right size.
@@ -180,7 +197,8 @@ std::string quoted(std::string_view token) {
 
 class AsciiParser {
  public:
-  AsciiParser(std::string_view text, const std::string& name) : tokens_(text), name_(name) {}
+  AsciiParser(std::string_view text, const std::string& name, StlReadOptions options)
+      : tokens_(text), name_(name), builder_(options) {}
 
   TriangleMesh parse() {
     std::string_view token = tokens_.next();
@@ -256,14 +274,46 @@ class AsciiParser {
 
 }  // namespace
 
-TriangleMesh parse_stl(const std::string& bytes, const std::string& name_for_errors) {
+TriangleMesh parse_stl(const std::string& bytes, const std::string& name_for_errors, StlReadOptions options) {
   if (bytes.empty()) throw FileError(name_for_errors + ": empty file (0 bytes), not an STL file");
-  if (bytes.size() >= kHeaderBytes && bytes.size() == binary_size(read_u32le(bytes.data() + 80)))
-    return parse_binary(bytes, name_for_errors);
-  if (looks_like_ascii(bytes)) return AsciiParser(bytes, name_for_errors).parse();
+  if (bytes.size() >= kHeaderBytes && bytes.size() == binary_size(read_u32le(bytes.data() + 80))) {
+    const std::uint32_t count = read_u32le(bytes.data() + 80);
+    MeshBuilder builder(options);
+    builder.reserve(count);
+    add_binary_facets(bytes.data() + kHeaderBytes, 0, count, count, name_for_errors, builder);
+    return std::move(builder).finish();
+  }
+  if (looks_like_ascii(bytes)) return AsciiParser(bytes, name_for_errors, options).parse();
   throw binary_size_error(bytes, name_for_errors);
 }
 
-TriangleMesh read_stl(const std::string& path) { return parse_stl(read_file(path), path); }
+TriangleMesh read_stl(const std::string& path, StlReadOptions options) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw FileError(path + ": cannot open (" + std::strerror(errno) + ")");
+  const std::streamoff end = in.tellg();
+  if (end < 0 || !in.seekg(0)) throw FileError(path + ": read failed");
+  const auto size = static_cast<std::uint64_t>(end);
+  // A binary file is read a block of facets at a time, not whole: its bytes would double the memory.
+  std::string bytes(std::min<std::uint64_t>(size, kHeaderBytes), '\0');
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) throw FileError(path + ": read failed");
+  if (size >= kHeaderBytes && size == binary_size(read_u32le(bytes.data() + 80))) {
+    const std::uint32_t count = read_u32le(bytes.data() + 80);
+    MeshBuilder builder(options);
+    builder.reserve(count);
+    constexpr std::uint64_t kBlock = 1 << 14;  // facets per read: 800 kB
+    for (std::uint64_t first = 0; first < count; first += kBlock) {
+      const std::uint64_t n = std::min<std::uint64_t>(kBlock, count - first);
+      bytes.resize(kFacetBytes * n);
+      if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) throw FileError(path + ": read failed");
+      add_binary_facets(bytes.data(), first, n, count, path, builder);
+    }
+    return std::move(builder).finish();
+  }
+  bytes.resize(size);
+  if (size > kHeaderBytes &&
+      !in.read(bytes.data() + kHeaderBytes, static_cast<std::streamsize>(size - kHeaderBytes)))
+    throw FileError(path + ": read failed");
+  return parse_stl(bytes, path, options);
+}
 
 }  // namespace cadnurbs

@@ -11,6 +11,7 @@
 #include <random>
 #include <set>
 
+#include "formats/common/file_io.hpp"
 #include "formats/stl/stl_reader.hpp"
 #include "weld_test_meshes.hpp"
 
@@ -146,6 +147,35 @@ TEST(WeldVertices, CorpusCountsAgreeWithOpenMesh) {
                 relative.vertex_classes, relative.collapsed_triangles + relative.zero_area_triangles,
                 relative.largest_merge_distance / (1e6 * default_weld_tolerance(soup)));
     EXPECT_EQ(static_cast<size_t>(exact.vertex_classes), points.size()) << file;
+  }
+}
+
+// read_stl's block-wise binary reading gives what parse_stl gives on the whole file; with equal corners
+// merged while reading, the weld gives bit for bit the mesh it gives from the soup (the path of
+// bench_normals), and without facet normals no corner normals.
+TEST(WeldVertices, CorpusMergedReadWeldsAsTheSoup) {
+  const char* files[] = {"1002_tray_bottom.STL", "TR12J_OCC.stl", "bottle_ascii.stl", "fan.stl",
+                         "featuretype.STL",      "motor.stl",     "plate_holes.STL",  "simple_mesh_binary.stl"};
+  auto same = [](const TriangleMesh& a, const TriangleMesh& b) {
+    return a.positions == b.positions && a.triangles == b.triangles && a.corner_normals == b.corner_normals;
+  };
+  for (const char* file : files) {
+    const std::string path = std::string(CADNURBS_SHARED_DIR) + "/corpus/stl/" + file;
+    const TriangleMesh soup = read_stl(path);
+    EXPECT_TRUE(same(soup, parse_stl(read_file(path), path))) << file;
+    const TriangleMesh merged = read_stl(path, {.merge_equal_points = true});
+    const TriangleMesh bare = read_stl(path, {.facet_normals = false, .merge_equal_points = true});
+    EXPECT_EQ(merged.triangles.size(), soup.triangles.size()) << file;
+    EXPECT_LT(merged.positions.size(), soup.positions.size() / 3) << file;
+    EXPECT_TRUE(bare.corner_normals.empty()) << file;
+    for (const double tolerance : {0.0, default_weld_tolerance(soup), 1e3 * default_weld_tolerance(soup)}) {
+      WeldReport from_soup, from_merged;
+      const TriangleMesh expected = weld_vertices(soup, tolerance, &from_soup);
+      EXPECT_TRUE(same(weld_vertices(merged, tolerance, &from_merged), expected)) << file << " at " << tolerance;
+      EXPECT_EQ(from_merged.vertex_classes, from_soup.vertex_classes) << file;
+      EXPECT_EQ(from_merged.largest_merge_distance, from_soup.largest_merge_distance) << file;
+      EXPECT_EQ(weld_vertices(bare, tolerance).positions, expected.positions) << file;
+    }
   }
 }
 
