@@ -1,7 +1,7 @@
 #pragma once
 // Points hashed into cubic cells of a given size, so that every point within that distance of a query is
 // found by looking in the 27 cells around it (none missed at a cell border). The one neighbour search of
-// weld_polygon_meshes (greedy welding), sew_faces (vertex clusters), weld_vertices and nurss_from_nurbs.
+// weld_polygon_meshes (greedy welding), sew_faces (vertex clusters) and nurss_from_nurbs.
 #include <Eigen/Core>
 #include <cmath>
 #include <unordered_map>

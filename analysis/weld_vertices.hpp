@@ -21,9 +21,10 @@ struct WeldReport {
 double default_weld_tolerance(const TriangleMesh& mesh);
 
 // Takes a mesh and a tolerance >= 0; returns the mesh with every pair of vertices at distance
-// <= tolerance in one vertex. Exact: every such pair is found, none is missed at a cell border (the
-// points are hashed into cubes at least `tolerance` wide and each is compared with the 27 cubes around
-// it). O(n) expected for n vertices, unless very many vertices crowd within one tolerance.
+// <= tolerance in one vertex. Exact: every such pair is found, none is missed at a cell border
+// (bitwise-equal vertices are merged first; the distinct points are sorted into cubes at least
+// `tolerance` wide and each cube is compared with the 26 around it, in one sweep). O(n) expected for
+// the n vertices plus O(m log m) for the m distinct points, unless very many crowd within one tolerance.
 // - The merge is transitive: a chain a-b-c with a, b and b, c within the tolerance is one vertex even
 //   when a, c are not. This is the usual choice because any other leaves the result depending on the
 //   vertex order (which of b's neighbours wins), and a chain in a real part means the tolerance is
