@@ -4,9 +4,14 @@
 #include <array>
 #include <vector>
 
-#include "analysis/subdivision/loop_control_mesh.hpp"
+#include "core/loop_control_mesh.hpp"
 
 namespace cadnurbs {
+
+// How a vertex is refined, from the number of sharp edges at it (crease-tagged or boundary):
+// 0 smooth, 1 dart (smooth rules; the crease fades out there), 2 crease (curve rules), 3 or more, or
+// tagged, corner (stays where it is). Hoppe et al. 1994, section 3.2.
+enum class LoopVertexKind { smooth, dart, crease, corner };
 
 // The connectivity of one subdivision level (the control mesh's, or a refined one's).
 struct LoopTopology {

@@ -42,6 +42,7 @@ LoopLimitMesh loop_limit_mesh(const LoopTopology& control, int levels) {
   LoopStencils to_level(control.vertex_count, control.vertex_count);
   to_level.setIdentity();
   for (int k = 0; k < levels; ++k) {
+    out.coarser_vertex_count = out.level.vertex_count;
     LoopRefinement step = refine_loop(out.level);
     to_level = (step.stencils * to_level).pruned();
     out.level = std::move(step.fine);

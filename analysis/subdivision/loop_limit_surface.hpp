@@ -10,6 +10,7 @@ namespace cadnurbs {
 struct LoopLimitMesh {
   LoopTopology level;            // the k-th refinement's topology
   LoopStencils limit_from_control;  // rows: level-k vertices; columns: control vertices
+  int coarser_vertex_count = 0;     // level k-1's vertices, which are level k's first ones (0 for k = 0)
 };
 
 // Limit-point masks for a level's vertices (rows and columns: that level's vertices):

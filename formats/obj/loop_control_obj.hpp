@@ -4,7 +4,7 @@
 // "p" element. The layout and its rules are in docs/loop_control_obj.md.
 #include <string>
 
-#include "analysis/subdivision/loop_control_mesh.hpp"
+#include "core/loop_control_mesh.hpp"
 
 namespace cadnurbs {
 

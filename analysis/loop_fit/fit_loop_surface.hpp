@@ -1,0 +1,39 @@
+#pragma once
+// Fitting a Loop subdivision surface to a triangle mesh: the control points are solved so that the
+// limit surface passes close to the mesh (Hoppe et al. 1994, "Piecewise smooth surface
+// reconstruction", phase 3; Ma et al. 2004 for the limit-point least squares). The control mesh's
+// connectivity and sharp tags are given (decimate_control_mesh); fit_loop_to_tolerance adds vertices.
+#include "core/loop_control_mesh.hpp"
+
+namespace cadnurbs {
+
+struct LoopFitOptions {
+  int levels = 3;            // refinements of the limit mesh that stands for the limit surface
+  double fairness = 1e-5;    // spring term weight, relative to the data terms (Hoppe's E_spring)
+  double tangent_weight = 0.05;  // point-to-point share next to the point-to-tangent-plane distance
+  int max_iterations = 60;   // project-and-solve rounds
+};
+
+struct LoopFitReport {
+  int iterations = 0;         // project-and-solve rounds
+  long data_samples = 0;      // input points fitted
+  double rms = 0, max = 0;    // two-sided distances at the fit's samples, in the best round
+  // Per input vertex, the largest distance of the samples nearest it (input points on its triangles,
+  // limit points whose nearest input point is by it): where the fit stays far.
+  std::vector<double> input_vertex_distance;
+};
+
+// Takes a welded input mesh and a starting control mesh; returns the control mesh with fitted
+// positions (connectivity and tags unchanged). The data: every input vertex, and on every triangle a
+// lattice at most half the mean edge length apart; and the other way, every limit-mesh vertex is
+// pulled to its nearest input point, so the distance is fitted both ways. Each round projects the
+// data onto the current limit mesh (CGAL AABB tree), then solves the sparse least squares for all
+// control points at once (Eigen LDLT of the normal equations), each residual measured to the tangent
+// plane at its foot point plus a small point-to-point share (squared distance minimisation, as Ma et
+// al. 2004), pairs whose normals face opposite ways left out (thin walls); it stops when three rounds
+// in a row improve the RMS by less than 0.1 % and keeps the best round.
+// Refuses (std::invalid_argument) an input or control mesh without triangles, levels outside 1..5.
+LoopControlMesh fit_loop_surface(const TriangleMesh& input, const LoopControlMesh& start, const LoopFitOptions& options,
+                                 LoopFitReport* report = nullptr);
+
+}  // namespace cadnurbs

@@ -1,0 +1,36 @@
+#include "analysis/loop_fit/fit_loop_to_tolerance.hpp"
+
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+namespace cadnurbs {
+
+LoopControlMesh fit_loop_to_tolerance(const TriangleMesh& welded, int start_vertices, double sharp_angle,
+                                      double tolerance, const LoopFitOptions& options, LoopToleranceReport* report) {
+  if (!(tolerance > 0 && std::isfinite(tolerance)))
+    throw std::invalid_argument("fit_loop_to_tolerance: the tolerance must be a positive number");
+  LoopToleranceReport r;
+  std::set<int> keep;
+  int target = start_vertices;
+  LoopControlMesh fitted;
+  const int input_vertices = static_cast<int>(welded.positions.size());
+  while (true) {
+    ++r.rounds;
+    const LoopControlMesh start =
+        decimate_control_mesh(welded, target, sharp_angle, &r.decimation, {keep.begin(), keep.end()});
+    fitted = fit_loop_surface(welded, start, options, &r.fit);
+    r.met = r.fit.max <= tolerance;
+    if (r.met) break;
+    int added = 0;
+    for (int v = 0; v < input_vertices; ++v)
+      if (r.fit.input_vertex_distance[v] > tolerance && keep.insert(v).second) ++added;
+    const int count = static_cast<int>(fitted.positions.size());
+    if (added == 0 || count + added >= input_vertices) break;
+    target = count + added;
+  }
+  if (report) *report = r;
+  return fitted;
+}
+
+}  // namespace cadnurbs

@@ -1,0 +1,27 @@
+#pragma once
+// A Loop surface within a given distance of a mesh, with few control vertices: decimate, fit, and
+// where the fit stays too far keep more of the input's vertices and do it again.
+#include "analysis/loop_fit/decimate_control_mesh.hpp"
+#include "analysis/loop_fit/fit_loop_surface.hpp"
+
+namespace cadnurbs {
+
+struct LoopToleranceReport {
+  int rounds = 0;          // decimate-and-fit rounds
+  bool met = false;        // the last fit is within the tolerance at its samples
+  DecimationReport decimation;  // the last round's
+  LoopFitReport fit;            // the last round's
+};
+
+// Takes a welded mesh, the first round's vertex count, the sharp angle (as decimate_control_mesh) and
+// a tolerance > 0. Each round decimates the input with every vertex kept that an earlier round found
+// farther than the tolerance (fit_loop_surface's input_vertex_distance) and the count raised by as many,
+// and fits; it stops when the fit is within the tolerance, when no new vertex is far, or when the
+// count would reach the input's. Adding whole input vertices where the error is, and re-decimating
+// around them, keeps the control mesh as well shaped as the first (splitting control edges in place
+// made slivers that the fit could not use).
+// Refuses (std::invalid_argument) a tolerance that is not positive, and what the two steps refuse.
+LoopControlMesh fit_loop_to_tolerance(const TriangleMesh& welded, int start_vertices, double sharp_angle_radians,
+                                      double tolerance, const LoopFitOptions& options, LoopToleranceReport* report);
+
+}  // namespace cadnurbs

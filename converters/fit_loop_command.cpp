@@ -1,0 +1,119 @@
+#include <filesystem>
+#include <iostream>
+
+#include "analysis/scene_triangles.hpp"
+#include "converters/arguments.hpp"
+#include "converters/commands.hpp"
+#include "converters/file_formats.hpp"
+#include "converters/loop_fit_measurement.hpp"
+#include "formats/common/file_io.hpp"
+#include "formats/obj/loop_control_obj.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+const char* kHelp =
+    "usage: cadnurbs fit-loop IN.stl -o CONTROL.obj [--surface LIMIT.(stl|obj|wrl|x3dv|ply)]\n"
+    "                         [--control-vertices N] [--tolerance D] [--crease-angle DEG] [--levels K] [--weld TOL]\n"
+    "       cadnurbs fit-loop CONTROL.obj --input IN.stl [--surface LIMIT] [--levels K]\n"
+    "Fits a Loop subdivision surface to the triangles of IN: a control mesh by quadric decimation to N\n"
+    "vertices (default 200) with the edges sharper than the crease angle (default 40 degrees) kept and\n"
+    "tagged as creases, then control points solved by least squares so that the limit surface fits\n"
+    "IN both ways. --tolerance D then keeps more of IN's vertices where the surface stays farther\n"
+    "than D, decimates and fits again, until it is within D (N is the first round's count).\n"
+    "IN's vertices closer than TOL are welded first (default 1e-4 of the bounding-box diagonal).\n"
+    "-o writes the control mesh with its tags (OBJ; docs/loop_control_obj.md); --surface the limit\n"
+    "surface (K refinements, default 3, vertices at their limit points). Prints the RMS and maximum\n"
+    "two-sided distance to IN, next to a plain quadric decimation with as many vertices, and storage.\n"
+    "Given a saved CONTROL.obj, it measures that control mesh's limit surface against --input.\n";
+
+}  // namespace
+
+int run_fit_loop(const std::vector<std::string>& args) {
+  const Arguments a = parse_arguments("fit-loop", args,
+                                      {"output", "surface", "control-vertices", "tolerance", "crease-angle", "levels", "input", "weld"},
+                                      {"help"});
+  if (a.has("help")) {
+    std::cout << kHelp;
+    return 0;
+  }
+  if (a.positional.size() != 1) throw UsageError("needs one input (see --help)");
+  const std::string in = a.positional[0];
+  const bool from_saved = std::filesystem::path(in).extension() == ".obj";
+  if (!from_saved && !a.has("output")) throw UsageError("needs -o CONTROL.obj (see --help)");
+  if (from_saved && !a.has("input")) throw UsageError("a saved control mesh needs --input IN.stl to measure against");
+  LoopFitRequest request;
+  request.control_vertices = a.integer("control-vertices", request.control_vertices);
+  if (request.control_vertices < 4) throw UsageError("--control-vertices must be 4 or more");
+  request.tolerance = a.number("tolerance", 0);
+  if (a.has("tolerance") && !(request.tolerance > 0 && std::isfinite(request.tolerance)))
+    throw UsageError("--tolerance must be a positive number");
+  request.crease_angle_degrees = a.number("crease-angle", request.crease_angle_degrees);
+  if (!(request.crease_angle_degrees >= 0 && request.crease_angle_degrees <= 180))
+    throw UsageError("--crease-angle must be 0 to 180 degrees");
+  request.weld_tolerance = a.number("weld", -1.0);
+  if (a.has("weld") && !(request.weld_tolerance >= 0 && std::isfinite(request.weld_tolerance)))
+    throw UsageError("--weld must be 0 or more");
+  request.levels = a.integer("levels", request.levels);
+  if (request.levels < 1 || request.levels > 5) throw UsageError("--levels must be 1 to 5");
+  for (const std::string option : {"output", "surface"}) {
+    if (!a.has(option)) continue;
+    std::error_code ec;
+    for (const std::string& source : {in, a.value("input")})
+      if (!source.empty() && std::filesystem::equivalent(source, a.value(option), ec))
+        throw UsageError(a.value(option) + ": output would overwrite an input");
+  }
+  if (a.has("output") && std::filesystem::path(a.value("output")).extension() != ".obj")
+    throw UsageError(a.value("output") + ": the control mesh is written as .obj");
+  if (a.has("surface")) output_format(a.value("surface"));  // refuse an unknown format before the work
+
+  const std::string mesh_path = from_saved ? a.value("input") : in;
+  const Scene scene = read_scene(mesh_path);
+  const TriangleMesh triangles = scene_triangles(scene);
+  if (triangles.triangles.empty()) throw FileError(mesh_path + ": no triangles to fit");
+  LoopControlMesh saved;
+  if (from_saved) {
+    saved = read_loop_control_obj(in);
+    request.saved_control = &saved;
+  }
+  const LoopFitMeasure m = measure_loop_fit(triangles, request);
+
+  if (a.has("output")) write_loop_control_obj(a.value("output"), m.control);
+  if (a.has("surface")) {
+    Scene limit;
+    limit.unit = scene.unit;
+    limit.source_unit = scene.source_unit;
+    limit.root.name = std::filesystem::path(in).stem().string() + "-limit";
+    limit.root.shapes.push_back({limit.root.name, m.limit, std::nullopt});
+    SceneWriteOptions options;
+    options.title = limit.root.name;
+    write_scene(a.value("surface"), limit, options);
+  }
+  const std::string unit = scene.unit.name;
+  std::cout << mesh_path << ": " << m.input_triangles << " triangles, " << m.input_vertices << " welded vertices\n";
+  if (!from_saved)
+    std::cout << "control mesh: " << m.control.positions.size() << " vertices, " << m.control.triangles.size()
+              << " triangles, " << m.control.crease_edges.size() << " crease edges, " << m.control.corner_vertices.size()
+              << " tagged corners (" << m.decimation.sharp_input_edges << " sharp input edges, "
+              << m.decimation.locked_corners << " corners locked, " << m.decimation.skipped_triangles
+              << " non-manifold triangles left out of the decimation); " << m.fit.iterations << " solves"
+              << (request.tolerance > 0 ? ", " + std::to_string(m.rounds) + " rounds: " +
+                                              (m.tolerance_met ? "within " : "NOT within ") + a.value("tolerance") +
+                                              " at the fit's samples"
+                                        : std::string())
+              << "\n";
+  std::cout << "limit surface (" << request.levels << " levels, " << m.limit.triangles.size()
+            << " triangles) to input, two-sided: RMS " << m.limit_distance.rms << " " << unit << ", max "
+            << m.limit_distance.max << " " << unit << "\n"
+            << "quadric decimation to " << m.control.positions.size() << " vertices, two-sided: RMS "
+            << m.qem_distance.rms << " " << unit << ", max " << m.qem_distance.max << " " << unit << " (RMS ratio "
+            << m.limit_distance.rms / m.qem_distance.rms << ", max ratio " << m.limit_distance.max / m.qem_distance.max
+            << ")\n"
+            << "storage: control mesh " << m.control_floats << " floats, " << m.control_integers << " integers, "
+            << m.control_tags << " tag integers; input " << m.input_floats << " floats, " << m.input_integers
+            << " integers\n";
+  return 0;
+}
+
+}  // namespace cadnurbs

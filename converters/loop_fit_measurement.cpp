@@ -1,0 +1,66 @@
+#include "converters/loop_fit_measurement.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "analysis/mesh_distance.hpp"
+#include "analysis/subdivision/loop_limit_surface.hpp"
+#include "analysis/weld_vertices.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+TriangleMesh as_triangle_mesh(const LoopControlMesh& control) { return {control.positions, control.triangles, {}}; }
+
+}  // namespace
+
+LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequest& request) {
+  if (triangles.triangles.empty()) throw std::invalid_argument("measure_loop_fit: the mesh has no triangles");
+  LoopFitMeasure m;
+  const double weld = request.weld_tolerance >= 0 ? request.weld_tolerance : 100 * default_weld_tolerance(triangles);
+  const TriangleMesh input = weld_vertices(triangles, weld);
+  m.input_vertices = static_cast<int>(input.positions.size());
+  m.input_triangles = static_cast<int>(input.triangles.size());
+
+  const auto fit_start = std::chrono::steady_clock::now();
+  if (request.saved_control) {
+    m.control = *request.saved_control;
+  } else {
+    const double sharp_angle = request.crease_angle_degrees * M_PI / 180.0;
+    LoopFitOptions options;
+    options.levels = request.levels;
+    if (request.tolerance > 0) {
+      LoopToleranceReport rounds;
+      m.control = fit_loop_to_tolerance(input, request.control_vertices, sharp_angle, request.tolerance, options, &rounds);
+      m.decimation = rounds.decimation;
+      m.fit = rounds.fit;
+      m.rounds = rounds.rounds;
+      m.tolerance_met = rounds.met;
+    } else {
+      const LoopControlMesh start = decimate_control_mesh(input, request.control_vertices, sharp_angle, &m.decimation);
+      m.control = fit_loop_surface(input, start, options, &m.fit);
+    }
+  }
+  m.limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(m.control), request.levels), m.control.positions);
+  m.seconds_fit = seconds_since(fit_start);
+  m.limit_distance = mesh_distance(m.limit, input).overall;
+
+  const auto qem_start = std::chrono::steady_clock::now();
+  m.qem = as_triangle_mesh(decimate_control_mesh(input, static_cast<int>(m.control.positions.size()), -1));
+  m.seconds_qem = seconds_since(qem_start);
+  m.qem_distance = mesh_distance(m.qem, input).overall;
+
+  m.control_floats = 3L * static_cast<long>(m.control.positions.size());
+  m.control_integers = 3L * static_cast<long>(m.control.triangles.size());
+  m.control_tags = 2L * static_cast<long>(m.control.crease_edges.size()) + static_cast<long>(m.control.corner_vertices.size());
+  m.input_floats = 3L * m.input_vertices;
+  m.input_integers = 3L * m.input_triangles;
+  return m;
+}
+
+}  // namespace cadnurbs

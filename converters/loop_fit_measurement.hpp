@@ -1,0 +1,45 @@
+#pragma once
+// The whole Loop fit of a triangle mesh, as `fit-loop` and `report` run it: weld, decimate with
+// features kept, fit, and measure the limit surface against the input next to a plain quadric
+// decimation with as many vertices (the thing a user would otherwise publish).
+#include "analysis/loop_fit/decimate_control_mesh.hpp"
+#include "analysis/loop_fit/fit_loop_surface.hpp"
+#include "analysis/loop_fit/fit_loop_to_tolerance.hpp"
+#include "analysis/measure_deviation.hpp"
+
+namespace cadnurbs {
+
+struct LoopFitRequest {
+  int control_vertices = 200;       // the decimation's target (the first round's, with a tolerance)
+  double tolerance = 0;             // > 0: keep more input vertices until the fit is within it
+  double crease_angle_degrees = 40; // input edges at or above it are creases
+  int levels = 3;                   // refinements of the limit mesh
+  // Vertices closer than this are one (< 0: 1e-4 of the bounding-box diagonal, 100 times the normals'
+  // default: a fit needs connectivity, and ASCII exporters round shared corners differently, by
+  // up to 6e-5 of the diagonal in the corpus's OCC bottle).
+  double weld_tolerance = -1;
+  const LoopControlMesh* saved_control = nullptr;  // given: no fit, only its limit surface measured
+};
+
+struct LoopFitMeasure {
+  int input_vertices = 0, input_triangles = 0;  // after welding
+  LoopControlMesh control;
+  TriangleMesh limit;                 // `levels` refinements, vertices at their limit points
+  DecimationReport decimation;
+  LoopFitReport fit;
+  int rounds = 1;                     // decimate-and-fit rounds (more with a tolerance)
+  bool tolerance_met = false;         // with a tolerance: the fit is within it at its own samples
+  DeviationStats limit_distance;      // two-sided, limit mesh to input (mesh_distance)
+  TriangleMesh qem;                   // plain quadric decimation to the control mesh's vertex count
+  DeviationStats qem_distance;
+  // Storage as the thesis counts it: floats, integers (triangle corners), tag integers.
+  long control_floats = 0, control_integers = 0, control_tags = 0;
+  long input_floats = 0, input_integers = 0;  // the welded input mesh
+  double seconds_fit = 0, seconds_qem = 0;
+};
+
+// Takes the triangles of an STL (or any mesh; unwelded is fine) and the request; returns the fit
+// and its measures. Refuses (std::invalid_argument) a mesh without triangles.
+LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequest& request);
+
+}  // namespace cadnurbs

@@ -1,0 +1,164 @@
+// Loop fitting: a box keeps its sharp edges, a saved control mesh gives the same limit surface, and on
+// real parts the fitted limit surface is closer to the input than a quadric decimation with as many
+// vertices.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "analysis/loop_fit/decimate_control_mesh.hpp"
+#include "analysis/loop_fit/fit_loop_surface.hpp"
+#include "analysis/subdivision/loop_limit_surface.hpp"
+#include "converters/loop_fit_measurement.hpp"
+#include "formats/obj/loop_control_obj.hpp"
+#include "formats/stl/stl_reader.hpp"
+
+namespace cadnurbs {
+namespace {
+
+const Eigen::Vector3d kHalf(20, 10, 5);  // a 40 x 20 x 10 box centred on the origin
+
+// The box with each face a grid of n x n quads (two triangles each), welded, outward.
+TriangleMesh gridded_box(int n) {
+  TriangleMesh mesh;
+  std::map<std::array<long, 3>, int> index;
+  auto vertex = [&](const Eigen::Vector3d& p) {
+    const std::array<long, 3> key{std::lround(p.x() * 1e6), std::lround(p.y() * 1e6), std::lround(p.z() * 1e6)};
+    const auto [it, added] = index.emplace(key, static_cast<int>(mesh.positions.size()));
+    if (added) mesh.positions.push_back(p);
+    return it->second;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double side : {-1.0, 1.0}) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      auto at = [&](int i, int j) {
+        Eigen::Vector3d p;
+        p[axis] = side * kHalf[axis];
+        p[u] = kHalf[u] * (2.0 * i / n - 1);
+        p[v] = kHalf[v] * (2.0 * j / n - 1);
+        return vertex(p);
+      };
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          const int a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+          if (side > 0) {
+            mesh.triangles.push_back({a, b, c});
+            mesh.triangles.push_back({a, c, d});
+          } else {
+            mesh.triangles.push_back({a, c, b});
+            mesh.triangles.push_back({a, d, c});
+          }
+        }
+    }
+  return mesh;
+}
+
+// Distance from p to the box's surface.
+double off_box(const Eigen::Vector3d& p) {
+  const Eigen::Vector3d q = p.cwiseAbs() - kHalf;
+  const double outside = q.cwiseMax(0.0).norm();
+  return outside > 0 ? outside : -q.maxCoeff();
+}
+
+TEST(DecimateControlMesh, BoxKeepsItsCornersAndTaggedEdges) {
+  const TriangleMesh box = gridded_box(6);
+  DecimationReport report;
+  const LoopControlMesh control = decimate_control_mesh(box, 8, 40 * M_PI / 180, &report);
+  EXPECT_EQ(report.skipped_triangles, 0);
+  EXPECT_EQ(report.sharp_input_edges, 12 * 6);
+  int corners = 0;
+  for (const auto& p : control.positions) corners += (p.cwiseAbs() - kHalf).cwiseAbs().maxCoeff() == 0;
+  EXPECT_EQ(corners, 8);
+  // The tagged edges run exactly along the twelve box edges: their lengths add up to 4 (40 + 20 + 10).
+  double length = 0;
+  for (const auto& [a, b] : control.crease_edges) {
+    const Eigen::Vector3d m = (control.positions[a] + control.positions[b]) / 2;
+    EXPECT_LT(std::abs(off_box(m)), 1e-12);
+    length += (control.positions[a] - control.positions[b]).norm();
+  }
+  EXPECT_NEAR(length, 280.0, 1e-9);
+}
+
+TEST(FitLoopSurface, BoxStaysABoxWithSharpEdges) {
+  const TriangleMesh box = gridded_box(6);
+  const LoopControlMesh start = decimate_control_mesh(box, 8, 40 * M_PI / 180);
+  LoopFitReport report;
+  const LoopControlMesh fitted = fit_loop_surface(box, start, {}, &report);
+  const LoopLimitMesh limit = loop_limit_mesh(loop_topology(fitted), 3);
+  const TriangleMesh surface = evaluate_limit_mesh(limit, fitted.positions);
+  double worst = 0;
+  for (const auto& p : surface.positions) worst = std::max(worst, std::abs(off_box(p)));
+  EXPECT_LT(worst, 1e-6);  // the spring term is the only pull away from the exact box
+  EXPECT_LT(report.max, 1e-6);
+  // Sharp: across each limit edge on a box edge, the two faces stay at right angles.
+  const LoopEdges edges = loop_edges(limit.level);
+  auto normal = [&](int t) {
+    const auto& tri = surface.triangles[t];
+    const auto& p = surface.positions;
+    return Eigen::Vector3d((p[tri[1]] - p[tri[0]]).cross(p[tri[2]] - p[tri[0]]).normalized());
+  };
+  std::vector<std::vector<int>> faces_of_edge(edges.ends.size());
+  for (size_t t = 0; t < surface.triangles.size(); ++t)
+    for (const int e : edges.triangle_edges[t]) faces_of_edge[e].push_back(static_cast<int>(t));
+  int box_edges = 0;
+  for (size_t e = 0; e < edges.ends.size(); ++e) {
+    if (!edges.sharp[e]) continue;
+    ++box_edges;
+    EXPECT_NEAR(normal(faces_of_edge[e][0]).dot(normal(faces_of_edge[e][1])), 0.0, 1e-6);
+  }
+  EXPECT_EQ(box_edges, 12 * 8);  // each box edge split in 8 by 3 refinements
+}
+
+TEST(FitLoopSurface, SavedControlMeshGivesTheSameLimitSurface) {
+  const TriangleMesh part = read_stl(CADNURBS_SHARED_DIR "/corpus/stl/plate_holes.STL");
+  LoopFitRequest request;
+  request.control_vertices = 120;
+  const LoopFitMeasure fitted = measure_loop_fit(part, request);
+  ASSERT_FALSE(fitted.control.crease_edges.empty());
+  const LoopControlMesh read_back =
+      parse_loop_control_obj(format_loop_control_obj(fitted.control), "plate_holes-control.obj");
+  const TriangleMesh again = evaluate_limit_mesh(loop_limit_mesh(loop_topology(read_back), 3), read_back.positions);
+  ASSERT_EQ(again.positions.size(), fitted.limit.positions.size());
+  double worst = 0;
+  for (size_t v = 0; v < again.positions.size(); ++v) worst = std::max(worst, (again.positions[v] - fitted.limit.positions[v]).norm());
+  EXPECT_LE(worst, 1e-12);
+  EXPECT_EQ(again.triangles, fitted.limit.triangles);
+}
+
+// The issue's measure: at as many control vertices as a quadric decimation has vertices, the fitted
+// limit surface's two-sided RMS distance to the input is at most half the decimation's and its
+// maximum no larger. Holds on these parts; see the closing note of issue 11 for the others.
+class LoopFitAgainstQuadric : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(LoopFitAgainstQuadric, HalvesTheRmsAndKeepsTheMax) {
+  const TriangleMesh part = read_stl(GetParam());
+  const LoopFitMeasure m = measure_loop_fit(part, {});
+  EXPECT_EQ(m.control.positions.size(), 200u);
+  EXPECT_EQ(m.qem.positions.size(), 200u);
+  EXPECT_LE(m.limit_distance.rms, 0.5 * m.qem_distance.rms);
+  EXPECT_LE(m.limit_distance.max, m.qem_distance.max);
+  EXPECT_LT(m.control_floats, m.input_floats);
+}
+
+INSTANTIATE_TEST_SUITE_P(Parts, LoopFitAgainstQuadric,
+                         ::testing::Values(CADNURBS_SOURCE_DIR "/samples/capping-90.stl",
+                                           CADNURBS_SHARED_DIR "/corpus/stl/fan.stl",
+                                           CADNURBS_SHARED_DIR "/corpus/stl/featuretype.STL",
+                                           CADNURBS_SHARED_DIR "/corpus/stl/plate_holes.STL"));
+
+TEST(FitLoopToTolerance, KeepsVerticesUntilWithin) {
+  const TriangleMesh part = read_stl(CADNURBS_SHARED_DIR "/corpus/stl/plate_holes.STL");
+  LoopFitRequest request;
+  request.control_vertices = 100;
+  request.tolerance = 0.3;
+  const LoopFitMeasure m = measure_loop_fit(part, request);
+  EXPECT_TRUE(m.tolerance_met);
+  EXPECT_LE(m.fit.max, 0.3);
+  EXPECT_LE(m.limit_distance.max, 0.3);  // the denser measure agrees here
+  EXPECT_GT(m.rounds, 1);
+  EXPECT_GT(m.control.positions.size(), 100u);
+  EXPECT_LT(m.control.positions.size(), static_cast<size_t>(m.input_vertices));
+}
+
+}  // namespace
+}  // namespace cadnurbs
