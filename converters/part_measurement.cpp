@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "analysis/measure_deviation.hpp"
+#include "analysis/mesh_distance.hpp"
 #include "analysis/mesh_encoding.hpp"
 #include "analysis/nurss/nurss_figures.hpp"
 #include "analysis/nurss/nurss_text.hpp"
@@ -19,6 +20,7 @@
 #include "analysis/scene_triangles.hpp"
 #include "analysis/weld_exact.hpp"
 #include "converters/file_formats.hpp"
+#include "converters/loop_fit_measurement.hpp"
 #include "converters/scene_preparation.hpp"
 #include "core/bounding_box.hpp"
 #include "formats/cnb/cnb_reader.hpp"
@@ -27,6 +29,7 @@
 #include "formats/common/gzip.hpp"
 #include "formats/draco/draco_mesh_codec.hpp"
 #include "formats/meshopt/meshopt_mesh_codec.hpp"
+#include "formats/obj/loop_control_obj.hpp"
 
 namespace cadnurbs {
 
@@ -53,10 +56,11 @@ struct MeshFile {
   const char* key;
   const char* label;
   const char* extension;
+  const char* input_label;  // when the part is given as a mesh: the input itself, written again
 };
 constexpr MeshFile kMeshFiles[] = {
-    {"wrl-mesh", "VRML97 IndexedFaceSet at D", ".wrl"},
-    {"stl-mesh", "binary STL at D", ".stl"},
+    {"wrl-mesh", "VRML97 IndexedFaceSet at D", ".wrl", "VRML97 IndexedFaceSet of the input"},
+    {"stl-mesh", "binary STL at D", ".stl", "binary STL of the input"},
 };
 
 // The compressed meshes: the smallest encoding within D (analysis/mesh_encoding), written as the codec's
@@ -266,6 +270,60 @@ void add_curve(PartRecord& record, const BrepTranslation& loaded, const Scene& s
   }
 }
 
+// A part given as a mesh (STL): what users have (the mesh as written, indexed and as STL, read back and
+// compared with the input) against the Loop subdivision surface fitted within D (analysis/loop_fit):
+// its control mesh with tags as OBJ, read back; the deviation is the limit surface's, two-sided, against
+// the input; the limit mesh is written as an IndexedFaceSet to look at.
+void measure_mesh_input(PartRecord& record, const Scene& scene, const Folder& folder, const std::string& stem,
+                        PartViews* views) {
+  const TriangleMesh input = scene_triangles(scene);
+  if (input.triangles.empty()) throw std::invalid_argument("no NURBS surfaces and no triangles to measure");
+  record.mesh = mesh_storage(weld_exact(input));
+  SceneWriteOptions write_options;
+  write_options.title = stem;
+  for (const auto& file : kMeshFiles) {
+    const fs::path path = folder.file(stem + "-mesh", file.extension);
+    write_scene(path.string(), scene, write_options);
+    RepresentationFigures f{file.key, file.input_label, RepresentationKind::mesh, 0, 0, 0, 0, 0, ""};
+    measure_bytes(path, f);
+    const Scene read_back = read_scene(path.string());
+    count_mesh_file(read_back, std::string(file.extension) == ".stl", f);
+    f.deviation = mesh_distance(scene_triangles(read_back), input).overall.max;
+    f.deviation_basis = "read back against the input mesh (two-sided, sampled)";
+    record.representations.push_back(f);
+  }
+
+  LoopFitRequest request;
+  request.tolerance = record.deviation;
+  request.control_vertices = std::max(4, std::min(request.control_vertices, static_cast<int>(record.mesh.vertices) / 2));
+  const LoopFitMeasure fit = measure_loop_fit(input, request);
+  const fs::path path = folder.file(stem + "-loop-control", ".obj");
+  write_loop_control_obj(path.string(), fit.control);
+  RepresentationFigures f{"loop", "Loop subdivision control mesh with crease tags (.obj)", RepresentationKind::loop,
+                          0, 0, 0, 0, 0, ""};
+  const LoopControlMesh read_back = parse_loop_control_obj(measure_bytes(path, f), path.string());
+  f.floats = 3L * static_cast<long>(read_back.positions.size());
+  f.integers = 3L * static_cast<long>(read_back.triangles.size()) + 2L * static_cast<long>(read_back.crease_edges.size()) +
+               static_cast<long>(read_back.corner_vertices.size());
+  f.deviation = fit.limit_distance.max;
+  f.deviation_basis = "limit surface (" + std::to_string(request.levels) + " levels) against the input, two-sided, RMS " +
+                      report_number(fit.limit_distance.rms) + "; a quadric decimation with as many vertices: RMS " +
+                      report_number(fit.qem_distance.rms) + ", max " + report_number(fit.qem_distance.max);
+  record.representations.push_back(f);
+  if (!fit.tolerance_met)
+    record.warnings.push_back("Loop fit: not within D at its samples after " + std::to_string(fit.rounds) + " rounds");
+  Scene limit;
+  limit.unit = scene.unit;
+  limit.root.name = stem + "-loop-limit";
+  limit.root.shapes.push_back({"limit", fit.limit, std::nullopt});
+  write_scene(folder.file(stem + "-loop-limit", ".wrl").string(), limit, SceneWriteOptions{});
+  if (views) {
+    const fs::path mesh_view = folder.file(stem + "-mesh", ".x3dv");
+    write_scene(mesh_view.string(), scene, write_options);
+    views->mesh_x3dv = read_file(mesh_view.string());
+  }
+}
+
 PartRecord measure(const std::string& input, const PartMeasurementOptions& options, PartViews* views) {
   PartRecord record;
   record.input = input;
@@ -281,6 +339,10 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
   if (!(record.deviation > 0) || !std::isfinite(record.deviation))
     throw std::invalid_argument("the maximum deviation must be a positive number");
   record.nurbs = nurbs_storage(scene);
+  if (record.nurbs.surfaces == 0) {
+    measure_mesh_input(record, scene, Folder(options.files_folder), fs::path(input).stem().string(), views);
+    return record;
+  }
   const double tolerance = written_tolerance(scene, 0);
   const Scene compact = compact_scene(scene, tolerance);
   record.compact_nurbs = nurbs_storage(compact);

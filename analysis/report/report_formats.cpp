@@ -19,6 +19,7 @@ const char* kind_name(RepresentationKind kind) {
     case RepresentationKind::nurbs: return "nurbs";
     case RepresentationKind::mesh: return "mesh";
     case RepresentationKind::nurss: return "nurss";
+    case RepresentationKind::loop: return "loop";
   }
   return "";
 }

@@ -160,8 +160,8 @@ const char* const page_script = R"js(
   const data = (id) => JSON.parse(document.getElementById(id).textContent);
   const report = data('cadnurbs-report-data');
   const scenes = data('cadnurbs-view-data');
-  const strong = { nurbs: '#2f6db3', mesh: '#d9822b' };
-  const light = { nurbs: '#9cc0e8', mesh: '#f2c08f' };
+  const strong = { nurbs: '#2f6db3', mesh: '#d9822b', nurss: '#3c8f4a', loop: '#3c8f4a' };
+  const light = { nurbs: '#9cc0e8', mesh: '#f2c08f', nurss: '#a5d6ad', loop: '#a5d6ad' };
   const curveColours = ['#d9822b', '#b5452f', '#7a8f2b', '#8a5fb0', '#2b8f86'];
   const delivered = (r) => Math.min(r.bytes, r.gzip_bytes);
 
@@ -399,7 +399,7 @@ std::string part_section(const std::vector<PartRecord>& records, std::size_t ind
          "data-part=\""
       << index << "\" role=\"img\" aria-label=\"bytes per representation\"></canvas></div><figcaption>Bytes of every "
                   "file written and read back: dark, as written; light, gzip'd at level 9. Blue: NURBS; orange: "
-                  "mesh.</figcaption></figure>\n";
+                  "mesh; green: subdivision control mesh.</figcaption></figure>\n";
   if (!r.curve.empty())
     out << "<figure class=\"chart\"><div class=\"chart-box\"><canvas class=\"curve\" data-part=\"" << index
         << "\" role=\"img\" aria-label=\"storage against deviation\"></canvas></div><figcaption>Storage against "

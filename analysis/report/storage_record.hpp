@@ -10,8 +10,9 @@
 
 namespace cadnurbs {
 
-// nurss: a subdivision surface's control mesh (its bytes against the NURBS's and the meshes').
-enum class RepresentationKind { nurbs, mesh, nurss };
+// nurss: a subdivision surface's control mesh (its bytes against the NURBS's and the meshes'); loop: a
+// Loop subdivision control mesh fitted to a mesh input (against the meshes users have).
+enum class RepresentationKind { nurbs, mesh, nurss, loop };
 
 // One written file.
 struct RepresentationFigures {

@@ -160,6 +160,25 @@ TEST_F(Report, ASphereMeshWithinATenthOfAPercentIsNineTimesItsNurbsFile) {
   EXPECT_LT(cnb["bytes"].get<long>(), representation(part, "meshopt")["gzip_bytes"].get<long>());
 }
 
+TEST_F(Report, AnStlGetsItsFittedLoopControlMeshWithinD) {
+  const std::string in = std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-90.stl";
+  const CommandResult r = run("report " + in + " --format json -o " + path("r.json") + " --files " + path("files"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json part = Json::parse(read_file(path("r.json")))["parts"][0];
+  ASSERT_EQ(part["status"], "ok");
+  const Json& loop = representation(part, "loop");
+  EXPECT_EQ(loop["kind"], "loop");
+  // The control mesh as written: 3 floats per vertex, counted from the OBJ's "v" lines.
+  const std::string obj = read_file(path("files/capping-90/capping-90-loop-control.obj"));
+  long vertices = 0;
+  for (size_t at = obj.find("\nv "); at != std::string::npos; at = obj.find("\nv ", at + 1)) ++vertices;
+  EXPECT_EQ(loop["floats"].get<long>(), 3 * vertices);
+  EXPECT_EQ(loop["bytes"].get<long>(), static_cast<long>(obj.size()));
+  EXPECT_LE(loop["deviation"].get<double>(), 1.0);  // within D = 1 mm, measured on the limit surface
+  EXPECT_LT(loop["gzip_bytes"].get<long>(), representation(part, "stl-mesh")["gzip_bytes"].get<long>());
+  EXPECT_LT(loop["floats"].get<long>(), part["mesh"]["indexed_floats"].get<long>());
+}
+
 TEST_F(Report, ABadInputIsListedAndTheOthersAreStillReported) {
   write_file_atomically(path("broken.step"), "ISO-10303-21;\nHEADER;\nnot a step file");
   const std::string good = std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-end.x3dv";
