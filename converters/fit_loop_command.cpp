@@ -18,7 +18,7 @@ const char* kHelp =
     "                         [--control-vertices N] [--tolerance D] [--crease-angle DEG] [--levels K] [--weld TOL]\n"
     "       cadnurbs fit-loop CONTROL.obj --input IN.stl [--surface LIMIT] [--levels K]\n"
     "Fits a Loop subdivision surface to the triangles of IN: a control mesh by quadric decimation to N\n"
-    "vertices (default 200) with the edges sharper than the crease angle (default 40 degrees) kept and\n"
+    "vertices (default 200) with the edges sharper than the crease angle (default 30 degrees) kept and\n"
     "tagged as creases, then control points solved by least squares so that the limit surface fits\n"
     "IN both ways. --tolerance D then keeps more of IN's vertices where the surface stays farther\n"
     "than D, decimates and fits again, until it is within D (N is the first round's count).\n"

@@ -12,7 +12,8 @@ namespace cadnurbs {
 struct LoopFitRequest {
   int control_vertices = 200;       // the decimation's target (the first round's, with a tolerance)
   double tolerance = 0;             // > 0: keep more input vertices until the fit is within it
-  double crease_angle_degrees = 40; // input edges at or above it are creases
+  double crease_angle_degrees = 30; // input edges at or above it are creases (normals' default too; 40 left the
+                                    // OCC bottle's shoulder smooth: RMS 0.68 of QEM's against 0.47)
   int levels = 3;                   // refinements of the limit mesh
   // Vertices closer than this are one (< 0: 1e-4 of the bounding-box diagonal, 100 times the normals'
   // default: a fit needs connectivity, and ASCII exporters round shared corners differently, by

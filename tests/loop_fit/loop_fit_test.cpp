@@ -142,6 +142,7 @@ TEST_P(LoopFitAgainstQuadric, HalvesTheRmsAndKeepsTheMax) {
 
 INSTANTIATE_TEST_SUITE_P(Parts, LoopFitAgainstQuadric,
                          ::testing::Values(CADNURBS_SOURCE_DIR "/samples/capping-90.stl",
+                                           CADNURBS_SHARED_DIR "/corpus/stl/bottle_ascii.stl",
                                            CADNURBS_SHARED_DIR "/corpus/stl/fan.stl",
                                            CADNURBS_SHARED_DIR "/corpus/stl/featuretype.STL",
                                            CADNURBS_SHARED_DIR "/corpus/stl/plate_holes.STL"));
