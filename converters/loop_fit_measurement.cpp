@@ -1,6 +1,5 @@
 #include "converters/loop_fit_measurement.hpp"
 
-#include <chrono>
 #include <stdexcept>
 
 #include "analysis/mesh_distance.hpp"
@@ -10,10 +9,6 @@
 namespace cadnurbs {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 TriangleMesh as_triangle_mesh(const LoopControlMesh& control) { return {control.positions, control.triangles, {}}; }
 
@@ -27,7 +22,6 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
   m.input_vertices = static_cast<int>(input.positions.size());
   m.input_triangles = static_cast<int>(input.triangles.size());
 
-  const auto fit_start = std::chrono::steady_clock::now();
   if (request.saved_control) {
     m.control = *request.saved_control;
   } else {
@@ -47,12 +41,9 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
     }
   }
   m.limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(m.control), request.levels), m.control.positions);
-  m.seconds_fit = seconds_since(fit_start);
   m.limit_distance = mesh_distance(m.limit, input).overall;
 
-  const auto qem_start = std::chrono::steady_clock::now();
   m.qem = as_triangle_mesh(decimate_control_mesh(input, static_cast<int>(m.control.positions.size()), -1));
-  m.seconds_qem = seconds_since(qem_start);
   m.qem_distance = mesh_distance(m.qem, input).overall;
 
   m.control_floats = 3L * static_cast<long>(m.control.positions.size());

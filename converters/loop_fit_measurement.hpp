@@ -36,7 +36,6 @@ struct LoopFitMeasure {
   // Storage as the thesis counts it: floats, integers (triangle corners), tag integers.
   long control_floats = 0, control_integers = 0, control_tags = 0;
   long input_floats = 0, input_integers = 0;  // the welded input mesh
-  double seconds_fit = 0, seconds_qem = 0;
 };
 
 // Takes the triangles of an STL (or any mesh; unwelded is fine) and the request; returns the fit

@@ -115,30 +115,31 @@ bool facing_away(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return a.
 // One round's residuals, as distances.
 struct Residuals {
   std::vector<double> data_to_surface;      // per data point
-  std::vector<int> data_triangle;           // limit triangle nearest each data point
   std::vector<double> surface_to_data;      // per limit vertex
   std::vector<int> surface_owner;           // the input vertex nearest each limit vertex's foot
   double rms = 0, max = 0;
 };
 
-// Spring energy sum over control edges |x_a - x_b|^2, as a matrix.
+// Spring energy sum over control edges |x_a - x_b|^2, as a matrix over the unknowns (x, y, z of each
+// control point in turn), built once per connectivity.
 Sparse spring_matrix(const LoopControlMesh& control) {
   std::set<std::array<int, 2>> edges;
   for (const auto& t : control.triangles)
     for (int k = 0; k < 3; ++k) edges.insert({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
   std::vector<Triplet> w;
-  for (const auto& [a, b] : edges) {
-    w.emplace_back(a, a, 1.0);
-    w.emplace_back(b, b, 1.0);
-    w.emplace_back(a, b, -1.0);
-    w.emplace_back(b, a, -1.0);
-  }
-  Sparse out(control.positions.size(), control.positions.size());
+  for (const auto& [a, b] : edges)
+    for (int axis = 0; axis < 3; ++axis) {
+      w.emplace_back(3 * a + axis, 3 * a + axis, 1.0);
+      w.emplace_back(3 * b + axis, 3 * b + axis, 1.0);
+      w.emplace_back(3 * a + axis, 3 * b + axis, -1.0);
+      w.emplace_back(3 * b + axis, 3 * a + axis, -1.0);
+    }
+  const long n = 3 * static_cast<long>(control.positions.size());
+  Sparse out(n, n);
   out.setFromTriplets(w.begin(), w.end());
   return out;
 }
 
-// Fits the positions of `control` (connectivity fixed); returns the residuals of the final state.
 // One fitted point: its stencil over the control points (duplicates merged), where it should be, and
 // the normal of the surface it is measured against.
 struct Correspondence {
@@ -185,14 +186,8 @@ bool solve_control_points(const std::vector<Correspondence>& pairs, const Sparse
   }
   Sparse jm(static_cast<long>(b.size()), 3 * nc);
   jm.setFromTriplets(j.begin(), j.end());
-  std::vector<Triplet> s;
-  for (int k = 0; k < springs.outerSize(); ++k)
-    for (Sparse::InnerIterator it(springs, k); it; ++it)
-      for (int axis = 0; axis < 3; ++axis) s.emplace_back(3 * it.row() + axis, 3 * it.col() + axis, spring_weight * it.value());
-  Sparse spring3(3 * nc, 3 * nc);
-  spring3.setFromTriplets(s.begin(), s.end());
   const Sparse jt = jm.transpose();
-  Eigen::SimplicialLDLT<Sparse> solver(Sparse(jt * jm + spring3));
+  Eigen::SimplicialLDLT<Sparse> solver(Sparse(jt * jm + spring_weight * springs));
   if (solver.info() != Eigen::Success) return false;
   const Eigen::VectorXd x = solver.solve(jt * Eigen::Map<const Eigen::VectorXd>(b.data(), static_cast<long>(b.size())));
   if (solver.info() != Eigen::Success || !x.allFinite()) return false;
@@ -200,7 +195,7 @@ bool solve_control_points(const std::vector<Correspondence>& pairs, const Sparse
   return true;
 }
 
-// Fits the positions of `control` (connectivity fixed); returns the residuals of the final state.
+// Fits the positions of `control` (connectivity fixed); returns the residuals of the best round.
 Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
                         const std::vector<std::array<int, 3>>& input_mesh_triangles, const TriangleTree& input_tree,
                         const Samples& data, LoopControlMesh& control, const LoopFitOptions& options,
@@ -224,7 +219,6 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
 
     Residuals r;
     r.data_to_surface.resize(data.points.size());
-    r.data_triangle.resize(data.points.size());
     r.surface_to_data.resize(static_cast<size_t>(limit.coarser_vertex_count));
     r.surface_owner.resize(static_cast<size_t>(limit.coarser_vertex_count));
     std::vector<Correspondence> pairs;
@@ -244,7 +238,6 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       if (!facing_away(c.normal, data.normals[i])) pairs.push_back(std::move(c));
       const double d = (eig(point) - data.points[i]).norm();
       r.data_to_surface[i] = d;
-      r.data_triangle[i] = t;
       sum += d * d;
       r.max = std::max(r.max, d);
     }
@@ -278,7 +271,9 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       best = r;
       best_positions = control.positions;
     }
-    const double spring_weight = options.fairness * static_cast<double>(pairs.size()) / std::max<long>(1, springs.nonZeros() / 4);
+    // Relative to the data: pairs per (vertices + 2 edges) / 4, the entries of one axis' spring matrix.
+    const double spring_weight =
+        options.fairness * static_cast<double>(pairs.size()) / std::max<long>(1, springs.nonZeros() / 12);
     if (!solve_control_points(pairs, springs, spring_weight, options.tangent_weight, control.positions)) break;
     ++report.iterations;
   }

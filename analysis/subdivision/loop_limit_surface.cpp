@@ -9,27 +9,9 @@ LoopStencils loop_limit_stencils(const LoopTopology& level) {
   const int nv = level.vertex_count;
   std::vector<Eigen::Triplet<double>> weights;
   weights.reserve(static_cast<size_t>(nv) * 7);
-  for (int v = 0; v < nv; ++v) {
-    const auto& at = edges.vertex_edges[v];
-    switch (edges.vertex_kind[v]) {
-      case LoopVertexKind::corner:
-        weights.emplace_back(v, v, 1.0);
-        break;
-      case LoopVertexKind::crease:
-        weights.emplace_back(v, v, 2.0 / 3.0);
-        for (const int e : at)
-          if (edges.sharp[e]) weights.emplace_back(v, other_end(edges, e, v), 1.0 / 6.0);
-        break;
-      case LoopVertexKind::smooth:
-      case LoopVertexKind::dart: {
-        const int n = static_cast<int>(at.size());
-        const double w = 1.0 / (3.0 / (8.0 * loop_beta(n)) + n);
-        weights.emplace_back(v, v, 1.0 - n * w);
-        for (const int e : at) weights.emplace_back(v, other_end(edges, e, v), w);
-        break;
-      }
-    }
-  }
+  // Loop's limit weight w = 1 / (3 / (8 beta) + n); on creases the cubic B-spline's 2/3, 1/6.
+  const LoopVertexWeights rule{2.0 / 3.0, 1.0 / 6.0, [](int n) { return 1.0 / (3.0 / (8.0 * loop_beta(n)) + n); }};
+  for (int v = 0; v < nv; ++v) append_vertex_rule(edges, v, rule, weights);
   LoopStencils out(nv, nv);
   out.setFromTriplets(weights.begin(), weights.end());
   return out;

@@ -9,6 +9,29 @@ double loop_beta(int n) {
   return (5.0 / 8.0 - c * c) / n;
 }
 
+void append_vertex_rule(const LoopEdges& edges, int v, const LoopVertexWeights& rule,
+                        std::vector<Eigen::Triplet<double>>& weights) {
+  const auto& at = edges.vertex_edges[v];
+  switch (edges.vertex_kind[v]) {
+    case LoopVertexKind::corner:
+      weights.emplace_back(v, v, 1.0);
+      break;
+    case LoopVertexKind::crease:
+      weights.emplace_back(v, v, rule.crease_centre);
+      for (const int e : at)
+        if (edges.sharp[e]) weights.emplace_back(v, other_end(edges, e, v), rule.crease_neighbour);
+      break;
+    case LoopVertexKind::smooth:
+    case LoopVertexKind::dart: {
+      const int n = static_cast<int>(at.size());
+      const double w = rule.smooth_neighbour(n);
+      weights.emplace_back(v, v, 1.0 - n * w);
+      for (const int e : at) weights.emplace_back(v, other_end(edges, e, v), w);
+      break;
+    }
+  }
+}
+
 LoopRefinement refine_loop(const LoopTopology& coarse) {
   const LoopEdges edges = loop_edges(coarse);
   const int nv = coarse.vertex_count, ne = static_cast<int>(edges.ends.size());
@@ -18,27 +41,8 @@ LoopRefinement refine_loop(const LoopTopology& coarse) {
   using Triplet = Eigen::Triplet<double>;
   std::vector<Triplet> weights;
   weights.reserve(static_cast<size_t>(nv) * 7 + static_cast<size_t>(ne) * 4);
-  for (int v = 0; v < nv; ++v) {
-    const auto& at = edges.vertex_edges[v];
-    switch (edges.vertex_kind[v]) {
-      case LoopVertexKind::corner:
-        weights.emplace_back(v, v, 1.0);
-        break;
-      case LoopVertexKind::crease:
-        weights.emplace_back(v, v, 0.75);
-        for (const int e : at)
-          if (edges.sharp[e]) weights.emplace_back(v, other_end(edges, e, v), 0.125);
-        break;
-      case LoopVertexKind::smooth:
-      case LoopVertexKind::dart: {
-        const int n = static_cast<int>(at.size());
-        const double beta = loop_beta(n);
-        weights.emplace_back(v, v, 1.0 - n * beta);
-        for (const int e : at) weights.emplace_back(v, other_end(edges, e, v), beta);
-        break;
-      }
-    }
-  }
+  const LoopVertexWeights rule{0.75, 0.125, loop_beta};
+  for (int v = 0; v < nv; ++v) append_vertex_rule(edges, v, rule, weights);
   for (int e = 0; e < ne; ++e) {
     const int row = nv + e;
     const auto [a, b] = edges.ends[e];

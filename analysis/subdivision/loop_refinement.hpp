@@ -33,4 +33,17 @@ LoopRefinement refine_loop(const LoopTopology& coarse);
 // Loop's beta for a vertex with n edges (n >= 1).
 double loop_beta(int n);
 
+// A vertex rule's weights, the shape refinement and limit masks share: a crease vertex keeps
+// `crease_centre` and gives `crease_neighbour` to each neighbour along a sharp edge; a smooth or dart
+// vertex with n edges gives `smooth_neighbour(n)` to each neighbour and keeps the rest; a corner
+// keeps everything.
+struct LoopVertexWeights {
+  double crease_centre, crease_neighbour;
+  double (*smooth_neighbour)(int n);
+};
+
+// Appends vertex v's rule to `weights` as row v (the vertex keeps its number at the next level).
+void append_vertex_rule(const LoopEdges& edges, int v, const LoopVertexWeights& rule,
+                        std::vector<Eigen::Triplet<double>>& weights);
+
 }  // namespace cadnurbs
