@@ -15,7 +15,7 @@ demo: build
 	$(BUILD)/converters/cadnurbs demo -o $(BUILD)/demo
 
 test: build
-	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+	ctest --test-dir $(BUILD) --output-on-failure --timeout 900 -j $(JOBS)
 
 clean:
 	rm -rf $(BUILD)

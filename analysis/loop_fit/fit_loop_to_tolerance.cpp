@@ -1,5 +1,6 @@
 #include "analysis/loop_fit/fit_loop_to_tolerance.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -15,8 +16,7 @@ LoopControlMesh fit_loop_to_tolerance(const TriangleMesh& welded, int start_vert
   int target = start_vertices;
   LoopControlMesh fitted;
   const int input_vertices = static_cast<int>(welded.positions.size());
-  while (true) {
-    ++r.rounds;
+  for (r.rounds = 1;; ++r.rounds) {
     const LoopControlMesh start =
         decimate_control_mesh(welded, target, sharp_angle, &r.decimation, {keep.begin(), keep.end()});
     fitted = fit_loop_surface(welded, start, options, &r.fit);
@@ -26,8 +26,8 @@ LoopControlMesh fit_loop_to_tolerance(const TriangleMesh& welded, int start_vert
     for (int v = 0; v < input_vertices; ++v)
       if (r.fit.input_vertex_distance[v] > tolerance && keep.insert(v).second) ++added;
     const int count = static_cast<int>(fitted.positions.size());
-    if (added == 0 || count + added >= input_vertices) break;
-    target = count + added;
+    target = std::max(count + added, count + (count + 7) / 8);
+    if (added == 0 || target >= input_vertices || r.rounds == kMaxToleranceRounds) break;
   }
   if (report) *report = r;
   return fitted;
