@@ -1,5 +1,5 @@
-// bench_normals: `cadnurbs normals`' pipeline (read_stl without facet normals, weld_vertices, orient_faces, with_crease_normals at
-// 30 degrees) against OpenMesh (IO::read_mesh, which merges equal points, then face and vertex normals by
+// bench_normals: `cadnurbs normals`' pipeline (read_stl without facet normals, weld_vertices, orient_faces, crease_normals at
+// 30 degrees: a normal per corner group and an index per corner) against OpenMesh (IO::read_mesh, which merges equal points, then face and vertex normals by
 // update_normals) and assimp (ReadFile with JoinIdenticalVertices and GenSmoothNormals at a maximum
 // smoothing angle of 30 degrees) on one generated binary STL of about two million triangles.
 // Each is run three times, each time in a fresh process (this program re-executed with --run NAME), so
@@ -130,11 +130,10 @@ int run_ours(const std::string& path) {
   TriangleMesh oriented = orient_faces(std::move(welded));
   stage("orient");
   CreaseNormalsReport report;
-  const TriangleMesh shaded =
-      with_crease_normals(std::move(oriented), kCreaseDegrees * std::numbers::pi / 180, &report);
+  const CornerNormals shared = crease_normals(oriented, kCreaseDegrees * std::numbers::pi / 180, &report);
   stage("creases");
   const double seconds = seconds_since(start);
-  std::printf("%.6f %zu %d\n", seconds, shaded.positions.size(), report.distinct_normals);
+  std::printf("%.6f %zu %zu\n", seconds, oriented.positions.size(), shared.normals.size());
   return 0;
 }
 
@@ -227,7 +226,7 @@ int main(int argc, char** argv) {
     Run best;
   };
   std::vector<Row> rows = {
-      {"ours", "read_stl + weld_vertices + orient_faces + with_crease_normals 30 deg", {}},
+      {"ours", "read_stl + weld_vertices + orient_faces + crease_normals 30 deg", {}},
       {"openmesh", "IO::read_mesh + update_normals (face and vertex normals, no crease)", {}},
       {"assimp", "ReadFile: JoinIdenticalVertices + GenSmoothNormals 30 deg", {}},
   };

@@ -26,6 +26,17 @@ class UnionFind {
     if (a != b) parent_[std::max(a, b)] = std::min(a, b);
   }
   size_t size() const { return parent_.size(); }
+  // Consumes the sets; returns each element's class number, classes numbered 0, 1, ... in order of
+  // their smallest elements. In place, O(n): a parent is never larger than its child, so one increasing
+  // pass turns parents into roots and a second turns roots into numbers.
+  std::vector<int> into_class_numbers() && {
+    std::vector<int> label = std::move(parent_);
+    const int n = static_cast<int>(label.size());
+    for (int x = 0; x < n; ++x) label[x] = label[label[x]];
+    int classes = 0;
+    for (int x = 0; x < n; ++x) label[x] = label[x] == x ? classes++ : label[label[x]];
+    return label;
+  }
 
  private:
   std::vector<int> parent_;

@@ -93,6 +93,35 @@ TEST(CreaseNormals, CylinderSidesSmoothCapsSharp) {
               worst_side, worst_cap);
   EXPECT_LE(worst_side, 1e-6);
   EXPECT_LE(worst_cap, 1e-12);
+
+  // Shared: one normal per group, the same doubles as the spread ones, numbered by first corner.
+  const CornerNormals shared = crease_normals(welded, 30 * degrees);
+  ASSERT_EQ(shared.normals.size(), static_cast<size_t>(report.distinct_normals));
+  ASSERT_EQ(shared.corner_normal.size(), shaded.corner_normals.size());
+  int next = 0;
+  for (size_t c = 0; c < shared.corner_normal.size(); ++c) {
+    const int g = shared.corner_normal[c];
+    ASSERT_LE(g, next) << "corner " << c;
+    if (g == next) ++next;
+    EXPECT_EQ(shared.normals[g], shaded.corner_normals[c]) << "corner " << c;
+  }
+}
+
+// Two triangles folded flat onto each other across an edge, joined there by a crease angle above 180
+// degrees: at each end of the edge the two corners' angle-weighted normals cancel, so each corner takes
+// its own face's normal, the group's first corner in the group's slot and the other in a new one.
+TEST(CreaseNormals, ACancelledGroupGivesEachCornerItsFaceNormal) {
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 1, 0}};
+  m.triangles = {{0, 1, 2}, {1, 0, 3}};  // normals +z and -z; the second runs the shared edge 1 -> 0
+  CreaseNormalsReport report;
+  const CornerNormals shared = crease_normals(m, 4.0, &report);
+  EXPECT_EQ(report.smooth_edges, 1);
+  EXPECT_EQ(report.distinct_normals, 4);  // {A0, B1}, {A1, B0}, {A2}, {B2}
+  ASSERT_EQ(shared.normals.size(), 6u);
+  EXPECT_EQ(shared.corner_normal, (std::vector<int>{0, 1, 2, 4, 5, 3}));
+  for (int c = 0; c < 6; ++c)
+    EXPECT_EQ(shared.normals[shared.corner_normal[c]], Eigen::Vector3d(0, 0, c < 3 ? 1 : -1)) << "corner " << c;
 }
 
 // Two coplanar triangles join only across a shared edge with opposite directions; a third face on
