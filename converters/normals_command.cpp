@@ -10,6 +10,7 @@
 #include "converters/commands.hpp"
 #include "converters/file_formats.hpp"
 #include "formats/common/file_io.hpp"
+#include "formats/stl/stl_reader.hpp"
 
 namespace cadnurbs {
 
@@ -44,8 +45,12 @@ int run_normals(const std::vector<std::string>& args) {
   if (a.has("weld") && !(tolerance >= 0 && std::isfinite(tolerance))) throw UsageError("--weld must be 0 or more");
   output_format(out);  // refuse an unknown output before the work
 
-  const Scene scene = read_scene(in);
-  const TriangleMesh triangles = scene_triangles(scene);
+  // An STL file is read with equal corners merged and without its facet normals: the command makes its
+  // own, and the soup's three copies of every corner would be the largest thing in memory.
+  const bool stl = input_format(in).extensions.front() == ".stl";
+  const Scene scene = stl ? Scene{} : read_scene(in);
+  const TriangleMesh triangles =
+      stl ? read_stl(in, {.facet_normals = false, .merge_equal_points = true}) : scene_triangles(scene);
   if (triangles.triangles.empty()) throw FileError(in + ": no triangles to give normals to");
   WeldReport weld;
   const double tol = a.has("weld") ? tolerance : default_weld_tolerance(triangles);
@@ -62,8 +67,9 @@ int run_normals(const std::vector<std::string>& args) {
   SceneWriteOptions options;
   options.title = std::filesystem::path(in).filename().string();
   write_scene(out, result, options);
-  std::cout << in << ": welded at " << tol << " " << scene.unit.name << ": " << weld.input_vertices << " -> "
-            << weld.output_vertices << " vertices (largest move " << weld.largest_merge_distance << "), "
+  std::cout << in << ": " << 3 * triangles.triangles.size() << " corners at " << weld.input_vertices
+            << " distinct points, welded at " << tol << " " << scene.unit.name << " to " << weld.output_vertices
+            << " vertices (largest move " << weld.largest_merge_distance << "), "
             << weld.collapsed_triangles << " collapsed and " << weld.zero_area_triangles
             << " zero-area triangles dropped\n"
             << in << ": " << orient.components << (orient.components == 1 ? " component (" : " components (")
