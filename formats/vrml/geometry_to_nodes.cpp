@@ -4,8 +4,8 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <map>
 
+#include "core/equal_points.hpp"
 #include "formats/vrml/nurbs_tolerances.hpp"
 
 namespace cadnurbs {
@@ -165,17 +165,28 @@ NodePtr mesh_node(const TriangleMesh& mesh, VrmlDialect dialect, const GeometryP
   if (!mesh.corner_normals.empty()) {
     // Corners share a written normal when their normals are written alike: smooth regions store each once,
     // and normals that differ only below the written precision are one vector in the file.
+    // Equal normals are rounded once: bitwise-equal ones first (a smooth region's corners share theirs),
+    // then the rounded values (-0 taken as 0, as the written text does), each kept as it first came.
     const NumberPrecision normal_precision = with_digits(normal_tolerance, p);
-    std::map<std::array<double, 3>, int> index_of;
+    EqualPoints distinct;
+    std::vector<int> distinct_of_corner(mesh.corner_normals.size());
+    for (size_t corner = 0; corner < mesh.corner_normals.size(); ++corner)
+      distinct_of_corner[corner] = distinct.add(mesh.corner_normals[corner]);
+    EqualPoints written;
+    std::vector<int> written_of_distinct(distinct.points().size());
     MFVec3f vectors;
+    for (size_t d = 0; d < distinct.points().size(); ++d) {
+      const Eigen::Vector3d& n = distinct.points()[d];
+      const Eigen::Vector3d rounded(written_value(n.x(), normal_precision) + 0.0,
+                                    written_value(n.y(), normal_precision) + 0.0,
+                                    written_value(n.z(), normal_precision) + 0.0);
+      written_of_distinct[d] = written.add(rounded);
+      if (written_of_distinct[d] == static_cast<int>(vectors.values.size())) vectors.values.push_back(n);
+    }
     MFInt32 normal_indices;
+    normal_indices.values.reserve(mesh.corner_normals.size() / 3 * 4);
     for (size_t corner = 0; corner < mesh.corner_normals.size(); ++corner) {
-      const auto& n = mesh.corner_normals[corner];
-      const std::array<double, 3> written = {written_value(n.x(), normal_precision), written_value(n.y(), normal_precision),
-                                             written_value(n.z(), normal_precision)};
-      const auto [it, inserted] = index_of.try_emplace(written, static_cast<int>(vectors.values.size()));
-      if (inserted) vectors.values.push_back(n);
-      normal_indices.values.push_back(it->second);
+      normal_indices.values.push_back(written_of_distinct[distinct_of_corner[corner]]);
       if (corner % 3 == 2) normal_indices.values.push_back(-1);
     }
     auto normal = make_node("Normal");
