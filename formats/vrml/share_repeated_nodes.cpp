@@ -22,22 +22,31 @@ class Sharer {
   explicit Sharer(IdentifierRegistry& ids) : ids_(ids) {}
 
   void run(NodeDocument& document) {
+    for (auto& root : document.roots) shape(root);
     for (auto& root : document.roots) summarise(root);
     for (auto& root : document.roots)
       if (root) visit_fields(*root);
   }
 
  private:
+  // The type, and the DEF name when it is the scene's (generated names do not make nodes differ).
+  static std::string name_key(const Node& node) {
+    return node.type + (node.def_name.empty() || is_generated_identifier(node.def_name) ? "" : "=" + node.def_name);
+  }
+
   static bool shareable(const Node& node) {
     return node.def_name.empty() || is_generated_identifier(node.def_name);
   }
 
-  // Bottom up: equal subtrees get equal ids (hash-consing on the written text).
+  // Bottom up: equal subtrees get equal ids (hash-consing on the written text). A node whose shape no
+  // other node has cannot equal any, and gets an id of its own without its numbers being formatted:
+  // a large mesh is then formatted once, by the writer, instead of twice.
   const Summary& summarise(const NodePtr& node) {
     static const Summary null_summary{};
     if (!node) return null_summary;
     if (auto it = summaries_.find(node.get()); it != summaries_.end()) return it->second;
-    std::string key = node->type + (node->def_name.empty() || is_generated_identifier(node->def_name) ? "" : "=" + node->def_name);
+    const bool alone = shape_counts_.at(shape(node)) == 1;
+    std::string key = name_key(*node);
     size_t bytes = node->type.size() + 3;
     for (const auto& field : node->fields) {
       key += ' ' + field.name + ' ';
@@ -47,13 +56,46 @@ class Sharer {
         bytes += child.bytes;
       } else if (const auto* mf = std::get_if<MFNode>(&field.value)) {
         key += '[' + children_key(*mf, &bytes) + ']';
-      } else {
+      } else if (!alone) {
         append_value(key, field);
       }
     }
     bytes += key.size();
+    if (alone) return summaries_[node.get()] = Summary{-static_cast<int>(summaries_.size()) - 1, bytes};
     const auto [it, inserted] = ids_of_text_.try_emplace(std::move(key), static_cast<int>(ids_of_text_.size()) + 1);
     return summaries_[node.get()] = Summary{it->second, bytes};
+  }
+
+  // What equal text needs and is cheap to tell: type, name, field names, the shapes of the children, the
+  // value of single fields and the length of arrays. Equal text implies equal shape. Counted per node.
+  int shape(const NodePtr& node) {
+    if (!node) return 0;
+    if (auto it = shapes_.find(node.get()); it != shapes_.end()) return it->second;
+    std::string key = name_key(*node);
+    for (const auto& field : node->fields) {
+      key += ' ' + field.name + ' ';
+      if (const auto* sf = std::get_if<SFNode>(&field.value)) {
+        key += '#' + std::to_string(shape(sf->node));
+      } else if (const auto* mf = std::get_if<MFNode>(&field.value)) {
+        for (const auto& child : mf->nodes) key += '#' + std::to_string(shape(child));
+      } else if (const size_t n = array_length(field.value); n > 0) {
+        key += '(' + std::to_string(n) + ')';
+      } else {
+        append_value(key, field);
+      }
+    }
+    const auto [it, inserted] = shape_ids_.try_emplace(std::move(key), static_cast<int>(shape_ids_.size()) + 1);
+    ++shape_counts_[it->second];
+    return shapes_[node.get()] = it->second;
+  }
+
+  // The number of values of a numeric array field (0 for anything else, and for an empty array).
+  static size_t array_length(const FieldValue& v) {
+    if (const auto* a = std::get_if<MFFloat>(&v)) return a->values.size();
+    if (const auto* a = std::get_if<MFInt32>(&v)) return a->values.size();
+    if (const auto* a = std::get_if<MFVec2f>(&v)) return a->values.size();
+    if (const auto* a = std::get_if<MFVec3f>(&v)) return a->values.size();
+    return 0;
   }
 
   std::string children_key(const MFNode& children, size_t* bytes) {
@@ -129,6 +171,9 @@ class Sharer {
   IdentifierRegistry& ids_;
   std::unordered_map<const Node*, Summary> summaries_;
   std::unordered_map<std::string, int> ids_of_text_;
+  std::unordered_map<const Node*, int> shapes_;
+  std::unordered_map<std::string, int> shape_ids_;
+  std::unordered_map<int, int> shape_counts_;  // nodes per shape
   std::unordered_map<int, NodePtr> first_of_;
   std::map<std::string, Node*> first_children_;
   std::unordered_map<const Node*, NodePtr> group_of_;  // the shared Group of a first Transform

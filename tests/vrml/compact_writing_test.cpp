@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <regex>
+#include <tuple>
 
 #include "core/bounding_box.hpp"
 #include "analysis/tessellation_hints.hpp"
@@ -62,6 +63,28 @@ TEST(CompactWriting, RepeatedPartsAndAppearancesAreWrittenOnce) {
     // Shared nodes bring no names with them.
     for_each_shape(back, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) { EXPECT_EQ(shape.name, ""); });
   }
+}
+
+// Sharing compares nodes as written: two meshes whose points differ only below the written precision are
+// one mesh in the file; a third with one more point (same type and fields, another array length) is not.
+TEST(CompactWriting, MeshesEqualAsWrittenAreSharedAndOthersAreNot) {
+  auto mesh = [](double nudge, bool extra_point) {
+    TriangleMesh m;
+    m.positions = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {10, 10, nudge}};
+    m.triangles = {{0, 1, 2}, {2, 1, 3}};
+    if (extra_point) m.positions.push_back({5, 5, 5});
+    return m;
+  };
+  Scene scene;
+  for (const auto& [x, nudge, extra] : {std::tuple{0.0, 0.0, false}, {20.0, 1e-9, false}, {40.0, 0.0, true}}) {
+    SceneNode part;
+    part.transform.translate(Eigen::Vector3d(x, 0, 0));
+    part.shapes.push_back({"", mesh(nudge, extra), Colour{0, 0, 1}});
+    scene.root.children.push_back(part);
+  }
+  const std::string text = format_vrml(scene, with_encoding(VrmlEncoding::x3d_classic));
+  EXPECT_EQ(count(text, "IndexedFaceSet {"), 2u) << text;
+  EXPECT_EQ(count(text, "Coordinate {"), 2u) << text;
 }
 
 TEST(CompactWriting, ANameThatLooksGeneratedSurvives) {
