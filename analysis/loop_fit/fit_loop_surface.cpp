@@ -1,30 +1,21 @@
 #include "analysis/loop_fit/fit_loop_surface.hpp"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Simple_cartesian.h>
-
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
 
+#include "analysis/loop_fit/triangle_projection.hpp"
 #include "analysis/subdivision/loop_limit_surface.hpp"
 
 namespace cadnurbs {
 
 namespace {
 
-using K = CGAL::Simple_cartesian<double>;
-using TriangleIt = std::vector<K::Triangle_3>::const_iterator;
-using TriangleTree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, TriangleIt>>>;
+using namespace loop_fit;  // the closest-point helpers shared with improve_control_connectivity
 using Triplet = Eigen::Triplet<double>;
 using Sparse = Eigen::SparseMatrix<double>;
-
-K::Point_3 cg(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
-Eigen::Vector3d eig(const K::Point_3& p) { return {p.x(), p.y(), p.z()}; }
 
 std::vector<K::Triangle_3> cgal_triangles(const TriangleMesh& mesh) {
   std::vector<K::Triangle_3> out;
@@ -32,19 +23,6 @@ std::vector<K::Triangle_3> cgal_triangles(const TriangleMesh& mesh) {
   for (const auto& t : mesh.triangles)
     out.emplace_back(cg(mesh.positions[t[0]]), cg(mesh.positions[t[1]]), cg(mesh.positions[t[2]]));
   return out;
-}
-
-// Barycentric coordinates of p (on or near triangle abc), clamped to the triangle.
-Eigen::Vector3d barycentric(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                            const Eigen::Vector3d& c) {
-  const Eigen::Vector3d e0 = b - a, e1 = c - a, d = p - a;
-  const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = d.dot(e0), d21 = d.dot(e1);
-  const double det = d00 * d11 - d01 * d01;
-  if (!(det > 0)) return {1.0 / 3, 1.0 / 3, 1.0 / 3};
-  double v = (d11 * d20 - d01 * d21) / det, w = (d00 * d21 - d01 * d20) / det;
-  v = std::clamp(v, 0.0, 1.0);
-  w = std::clamp(w, 0.0, 1.0 - v);
-  return {1 - v - w, v, w};
 }
 
 struct Samples {
@@ -155,12 +133,6 @@ std::vector<std::pair<int, double>> merged(std::vector<std::pair<int, double>> e
     else out.push_back(e);
   }
   return out;
-}
-
-Eigen::Vector3d unit_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const Eigen::Vector3d n = (b - a).cross(c - a);
-  const double length = n.norm();
-  return length > 0 ? Eigen::Vector3d(n / length) : Eigen::Vector3d::Zero();
 }
 
 // Solves for the control points that minimise, over the correspondences, the squared distance to
