@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "analysis/edge_sides.hpp"
+#include "core/triangle_normal.hpp"
 #include "core/union_find.hpp"
 
 namespace cadnurbs {
@@ -17,11 +18,8 @@ double corner_angle(const Eigen::Vector3d& at, const Eigen::Vector3d& a, const E
 }
 
 Eigen::Vector3d unit_face_normal(const TriangleMesh& mesh, size_t t) {
-  const auto& P = mesh.positions;
-  const auto& T = mesh.triangles;
-  const Eigen::Vector3d n = (P[T[t][1]] - P[T[t][0]]).cross(P[T[t][2]] - P[T[t][0]]);
-  const double length = n.norm();
-  return length > 0 ? Eigen::Vector3d(n / length) : Eigen::Vector3d::Zero();
+  const auto& T = mesh.triangles[t];
+  return unit_normal(mesh.positions[T[0]], mesh.positions[T[1]], mesh.positions[T[2]]);
 }
 
 // Joins the corners that share a normal: for each smooth edge, the two corners at each of its ends.

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/triangle_normal.hpp"
+
 namespace cadnurbs::loop_fit {
 
 using K = CGAL::Simple_cartesian<double>;
@@ -19,13 +21,6 @@ using TriangleTree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_pr
 
 inline K::Point_3 cg(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 inline Eigen::Vector3d eig(const K::Point_3& p) { return {p.x(), p.y(), p.z()}; }
-
-// The unit normal of triangle abc (counter-clockwise), or zero when it has no area.
-inline Eigen::Vector3d unit_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const Eigen::Vector3d n = (b - a).cross(c - a);
-  const double length = n.norm();
-  return length > 0 ? Eigen::Vector3d(n / length) : Eigen::Vector3d::Zero();
-}
 
 // Barycentric coordinates of p (on or near triangle abc), clamped to the triangle; a triangle without
 // area gives its centroid's.

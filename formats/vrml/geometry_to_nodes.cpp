@@ -164,9 +164,9 @@ NodePtr mesh_node(const TriangleMesh& mesh, VrmlDialect dialect, const GeometryP
   node->set("coordIndex", std::move(indices));
   if (!mesh.corner_normals.empty()) {
     // Corners share a written normal when their normals are written alike: smooth regions store each once,
-    // and normals that differ only below the written precision are one vector in the file.
-    // Equal normals are rounded once: bitwise-equal ones first (a smooth region's corners share theirs),
-    // then the rounded values (-0 taken as 0, as the written text does), each kept as it first came.
+    // and normals that differ only below the written precision are one vector in the file. Each bitwise-
+    // distinct normal is rounded once, then shared by its rounded value (-0 taken as 0, as the text does),
+    // the first one kept as it came.
     const NumberPrecision normal_precision = with_digits(normal_tolerance, p);
     EqualPoints distinct;
     std::vector<int> distinct_of_corner(mesh.corner_normals.size());

@@ -31,7 +31,7 @@ class Sharer {
  private:
   // The type, and the DEF name when it is the scene's (generated names do not make nodes differ).
   static std::string name_key(const Node& node) {
-    return node.type + (node.def_name.empty() || is_generated_identifier(node.def_name) ? "" : "=" + node.def_name);
+    return node.type + (shareable(node) ? "" : "=" + node.def_name);
   }
 
   static bool shareable(const Node& node) {
