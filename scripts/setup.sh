@@ -13,6 +13,7 @@ debian_packages=(
   libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev
   libcgal-dev libopenmesh-dev libdraco-dev libmeshoptimizer-dev libtinygltf-dev nlohmann-json3-dev libtbb-dev
   view3dscene xvfb xauth chromium fonts-dejavu-core
+  clang libclang-rt-14-dev
 )
 
 # node/npm may come from elsewhere than Debian; the packages only when the commands are missing.
@@ -30,6 +31,18 @@ if [ -f "$viewer_dir/package-lock.json" ]; then
     (cd "$viewer_dir" && npm ci --no-audit --no-fund --loglevel=error)
   else
     echo "setup: npm packages present"
+  fi
+fi
+
+# The .3dm test-file generator (rhino3dm), pinned by package-lock.json; the 3dm tests run it at test time.
+rhino3dm_dir="$here/tests/3dm/generate"
+if [ -f "$rhino3dm_dir/package-lock.json" ]; then
+  if [ ! -d "$rhino3dm_dir/node_modules/rhino3dm" ] \
+     || [ "$rhino3dm_dir/package-lock.json" -nt "$rhino3dm_dir/node_modules/.package-lock.json" ]; then
+    echo "setup: npm ci in tests/3dm/generate"
+    (cd "$rhino3dm_dir" && npm ci --no-audit --no-fund --loglevel=error)
+  else
+    echo "setup: rhino3dm npm package present"
   fi
 fi
 
