@@ -4,9 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <zlib.h>
+
 #include <Eigen/Geometry>
+#include <cstring>
 
 #include "class_chunks.hpp"
+#include "formats/3dm/typecodes.hpp"
 #include "formats/common/file_io.hpp"
 
 namespace cadnurbs::rhino {
@@ -58,6 +62,121 @@ TEST(MeshObject, QuadsSplitInTwoInTheRhino6SubdLogoMeshes) {
   const Eigen::AlignedBox3d box = box_of(meshes[0]);
   EXPECT_NEAR(box.min().x(), -14.731868743896484, 1e-12);
   EXPECT_NEAR(box.max().z(), 13.509560585021973, 1e-12);
+}
+
+// The render meshes Rhino cached on each Brep face (ON_Mesh objects inside the Brep's data); rhino3dm's
+// BrepFace.getMesh(Render) gives the same counts, summed over the faces.
+TEST(MeshObject, CachedRenderMeshesOfBrepFaces) {
+  struct Case {
+    const char* file;
+    std::size_t meshes, vertices, triangles;
+  };
+  for (const Case& c : {Case{"v4_MechPartA.3dm", 41, 7839, 12614}, Case{"v7_rhino_logo_nurbs.3dm", 22, 17756, 32044}}) {
+    SCOPED_TRACE(c.file);
+    const auto meshes = meshes_in(c.file);
+    std::size_t vertices = 0, triangles = 0;
+    for (const auto& m : meshes) vertices += m.positions.size(), triangles += m.triangles.size();
+    EXPECT_EQ(meshes.size(), c.meshes);
+    EXPECT_EQ(vertices, c.vertices);
+    EXPECT_EQ(triangles, c.triangles);
+  }
+}
+
+// Hand-built ON_Mesh class data (archive version 4: 4-byte chunk lengths) for the layouts and refusals.
+struct MeshBytes {
+  std::string s;
+  template <class T>
+  MeshBytes& put(T v) {
+    s.append(reinterpret_cast<const char*>(&v), sizeof v);
+    return *this;
+  }
+  // Version byte, counts, the domains/boxes/closed flag (zeros), no mesh parameters or curvature stats.
+  MeshBytes(std::uint8_t version, std::int32_t vcount, std::int32_t fcount) {
+    put(version).put(vcount).put(fcount);
+    s.append(148 + 5, '\0');
+  }
+};
+
+const float kSquare[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+
+std::string error_of(const std::string& bytes) {
+  try {
+    ArchiveReader reader(bytes, "m.3dm", 4);
+    read_mesh(reader);
+  } catch (const ArchiveError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(MeshObject, PlainArraysOfVersion1AndAQuadSplitInTwo) {
+  MeshBytes b(0x10, 4, 1);
+  b.put(std::int32_t{2}).put(std::uint16_t{0}).put(std::uint16_t{1}).put(std::uint16_t{2}).put(std::uint16_t{3});
+  b.put(std::int32_t{4});
+  for (const auto& p : kSquare) b.put(p[0]).put(p[1]).put(p[2]);
+  ArchiveReader reader(b.s, "m.3dm", 4);
+  const TriangleMesh mesh = read_mesh(reader);
+  ASSERT_EQ(mesh.positions.size(), 4u);
+  EXPECT_EQ(mesh.positions[2], Eigen::Vector3d(1, 1, 0));
+  ASSERT_EQ(mesh.triangles.size(), 2u);
+  EXPECT_EQ(mesh.triangles[0], (std::array<int, 3>{0, 1, 2}));
+  EXPECT_EQ(mesh.triangles[1], (std::array<int, 3>{0, 2, 3}));
+  EXPECT_DOUBLE_EQ(mesh_area(mesh), 1.0);
+}
+
+TEST(MeshObject, CompressedVertexBufferOfVersion3) {
+  std::string raw(reinterpret_cast<const char*>(kSquare), sizeof kSquare);
+  uLongf packed_size = compressBound(static_cast<uLong>(raw.size()));
+  std::string packed(packed_size, '\0');
+  ASSERT_EQ(compress(reinterpret_cast<Bytef*>(packed.data()), &packed_size, reinterpret_cast<const Bytef*>(raw.data()),
+                     static_cast<uLong>(raw.size())),
+            Z_OK);
+  packed.resize(packed_size);
+  const auto crc = [](const std::string& x) {
+    return static_cast<std::uint32_t>(::crc32(0, reinterpret_cast<const Bytef*>(x.data()), static_cast<uInt>(x.size())));
+  };
+  MeshBytes b(0x30, 4, 2);  // version 3.0: two triangles, 1-byte indices
+  b.put(std::int32_t{1});
+  for (std::uint8_t i : {0, 1, 2, 2, 0, 2, 3, 3}) b.put(i);
+  b.put(static_cast<std::uint32_t>(raw.size())).put(crc(raw)).put(std::uint8_t{1});
+  b.put(tcode::kAnonymousChunk).put(static_cast<std::uint32_t>(packed.size() + 4));
+  b.s += packed;
+  b.put(crc(packed));
+  for (int k = 0; k < 4; ++k) b.put(std::uint32_t{0});  // no normals, texture coordinates, curvatures, colours
+  ArchiveReader reader(b.s, "m.3dm", 4);
+  const TriangleMesh mesh = read_mesh(reader);
+  ASSERT_EQ(mesh.positions.size(), 4u);
+  EXPECT_EQ(mesh.positions[3], Eigen::Vector3d(0, 1, 0));
+  EXPECT_EQ(mesh.triangles.size(), 2u);
+  EXPECT_EQ(reader.offset(), b.s.size());
+
+  // The same with a corrupted inflated CRC.
+  std::string bad = b.s;
+  bad[MeshBytes(0x30, 4, 2).s.size() + 4 + 8 + 4] ^= 1;
+  EXPECT_EQ(error_of(bad), "m.3dm: offset " + std::to_string(MeshBytes(0x30, 4, 2).s.size() + 4 + 8 + 9 + 8 + packed.size() + 4) +
+                               ": ON_Mesh vertex buffer: CRC mismatch of the inflated bytes");
+}
+
+TEST(MeshObject, RefusesBadIndicesAndImpossibleBufferSizes) {
+  MeshBytes face(0x10, 4, 1);
+  face.put(std::int32_t{4}).put(std::uint32_t{0}).put(std::uint32_t{1}).put(std::uint32_t{4}).put(std::uint32_t{4});
+  EXPECT_EQ(error_of(face.s), "m.3dm: offset 182: ON_Mesh: face 0 has vertex index 4, the mesh has 4 vertices");
+
+  MeshBytes size(0x30, 4, 0);
+  size.put(std::int32_t{0}).put(std::uint32_t{13});
+  EXPECT_EQ(error_of(size.s), "m.3dm: offset " + std::to_string(size.s.size()) +
+                                  ": ON_Mesh vertex buffer: declared size 13 bytes, expected 48");
+
+  // 100,000 vertices (1.2 MB) claimed from a 10-byte zlib stream: refused before inflating or allocating.
+  MeshBytes ratio(0x30, 100000, 0);
+  ratio.put(std::int32_t{0}).put(std::uint32_t{1200000}).put(std::uint32_t{0}).put(std::uint8_t{1});
+  ratio.put(tcode::kAnonymousChunk).put(std::uint32_t{14});
+  ratio.s.append(14, '\0');
+  EXPECT_EQ(error_of(ratio.s), "m.3dm: chunk 0x40008000 at offset " + std::to_string(ratio.s.size() - 22) +
+                                   ": ON_Mesh vertex buffer: 10 compressed bytes cannot inflate to 1200000");
+
+  MeshBytes version(0x20, 0, 0);
+  EXPECT_EQ(error_of(version.s), "m.3dm: offset 1: ON_Mesh: chunk version 2.0 is not 1.x or 3.x");
 }
 
 }  // namespace
