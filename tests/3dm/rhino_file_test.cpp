@@ -189,5 +189,21 @@ TEST(RhinoFile, AnObjectThatFailsToReadIsSkippedAndTheNextOnesRead) {
   EXPECT_EQ(f.warnings[0], expected);
 }
 
+TEST(RhinoFile, ACorruptedByteUnderACrcIsCaught) {
+  std::string bytes = read_file(corpus("mesh.3dm"));
+  const auto meshes = testing::class_chunk_offsets(bytes, "4ED7D4E4-E947-11D3-BFE5-0010830122F0");
+  ASSERT_EQ(meshes.size(), 1u);
+  // The last byte of the class id inside the TCODE_OPENNURBS_CLASS_UUID chunk (CRC-checked, read whole).
+  const std::size_t uuid_chunk = meshes[0] + 12;
+  bytes[uuid_chunk + 12 + 15] ^= 0x01;
+  const Rhino3dmFile f = parse_3dm(bytes, "crc.3dm");
+  ASSERT_EQ(f.objects.size(), 1u);
+  EXPECT_TRUE(std::holds_alternative<Unsupported>(f.objects[0].geometry));
+  ASSERT_EQ(f.warnings.size(), 1u);
+  EXPECT_NE(f.warnings[0].find("crc.3dm: chunk 0x0002FFFB at offset " + std::to_string(uuid_chunk) + ": CRC mismatch"),
+            std::string::npos)
+      << f.warnings[0];
+}
+
 }  // namespace
 }  // namespace cadnurbs::rhino
