@@ -40,10 +40,10 @@ const std::array kClasses = {
     ClassRow{"4ED7D4E6-E947-11D3-BFE5-0010830122F0", "ON_PolylineCurve", &as_geometry<read_polyline_curve>},
     ClassRow{"4ED7D4E0-E947-11D3-BFE5-0010830122F0", "ON_PolyCurve", &as_geometry<read_poly_curve>},
     ClassRow{"EF638317-154B-11D4-8000-0010830122F0", "ON_PolyCurve", &as_geometry<read_poly_curve>},  // old V2 polycurve
-    ClassRow{"4ED7D4D9-E947-11D3-BFE5-0010830122F0", "ON_CurveProxy", nullptr},  // curve helper's to fill
+    ClassRow{"4ED7D4D9-E947-11D3-BFE5-0010830122F0", "ON_CurveProxy", nullptr},  // never in a file: its Write returns false
     ClassRow{"4ED7D4D8-E947-11D3-BFE5-0010830122F0", "ON_CurveOnSurface", nullptr},
     ClassRow{"39FF3DD3-FE0F-4807-9D59-185F0D73C0E4", "ON_PolyEdgeCurve", nullptr},
-    ClassRow{"42F47A87-5B1B-4E31-AB87-4639D78325D6", "ON_PolyEdgeSegment", nullptr},
+    ClassRow{"42F47A87-5B1B-4E31-AB87-4639D78325D6", "ON_PolyEdgeSegment", nullptr},  // refers to another object's Brep edge: no geometry
     // Surfaces.
     ClassRow{"4ED7D4DE-E947-11D3-BFE5-0010830122F0", "ON_NurbsSurface", &as_geometry<read_nurbs_surface>},
     ClassRow{"4760C817-0BE3-11D4-BFFE-0010830122F0", "ON_NurbsSurface", &as_geometry<read_nurbs_surface>},  // TL_NurbsSurface
@@ -53,7 +53,7 @@ const std::array kClasses = {
     ClassRow{"0A8401B6-4D34-4B99-8615-1B4E723DC4E5", "ON_RevSurface", &as_geometry<read_rev_surface>},  // TL_RevSurface
     ClassRow{"C4CD5359-446D-4690-9FF5-29059732472B", "ON_SumSurface", &as_geometry<read_sum_surface>},
     ClassRow{"665F6331-2A66-4CCE-81D0-B5EEBD9B5417", "ON_SumSurface", &as_geometry<read_sum_surface>},  // TL_SumSurface
-    ClassRow{"4ED7D4E2-E947-11D3-BFE5-0010830122F0", "ON_SurfaceProxy", nullptr},  // surface helper's to fill
+    ClassRow{"4ED7D4E2-E947-11D3-BFE5-0010830122F0", "ON_SurfaceProxy", nullptr},  // never in a file: its Write returns false
     ClassRow{"DBC5A584-CE3F-4170-98A8-497069CA5C36", "ON_ClippingPlaneSurface", nullptr},
     ClassRow{"00C61749-D430-4ECC-83A8-29130A20CF9C", "ON_OffsetSurface", nullptr},
     // Breps, extrusions, meshes.
