@@ -46,9 +46,9 @@ std::string inflate_stream(ArchiveReader& reader, std::string_view stream, std::
 
 std::string read_compressed_buffer(ArchiveReader& reader, std::size_t expected_size, const std::string& what) {
   const std::uint32_t size = reader.u32();
+  if (size == 0) return {};
   if (size != expected_size)
     reader.fail(what + ": declared size " + std::to_string(size) + " bytes, expected " + std::to_string(expected_size));
-  if (size == 0) return {};
   const std::uint32_t crc = reader.u32();
   const std::uint8_t method = reader.u8();
   std::string out;

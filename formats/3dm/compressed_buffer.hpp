@@ -10,8 +10,8 @@
 namespace cadnurbs::rhino {
 
 // Reads one compressed buffer whose inflated size must be `expected_size` (the caller knows it from its
-// counts, e.g. vertex count * 12). Returns the inflated bytes. Refused, before anything is allocated: a
-// declared size other than expected_size, a method other than 0 or 1, a zlib stream too short to inflate
+// counts, e.g. vertex count * 12) or 0 (openNURBS's form of an absent array). Returns the inflated bytes
+// ("" for an absent array). Refused, before anything is allocated: a declared size other than those, a method other than 0 or 1, a zlib stream too short to inflate
 // to the declared size (deflate cannot shrink data more than 1032:1); then a stream that ends early, runs
 // long or is corrupt, and a CRC mismatch. `what` names the buffer in messages ("vertex buffer").
 std::string read_compressed_buffer(ArchiveReader& reader, std::size_t expected_size, const std::string& what);

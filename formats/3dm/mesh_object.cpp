@@ -1,5 +1,6 @@
 #include "formats/3dm/mesh_object.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstring>
 
@@ -43,6 +44,19 @@ std::vector<std::array<int, 3>> read_faces(ArchiveReader& reader, std::size_t fa
     if (vi[2] != vi[3]) triangles.push_back({i(0), i(2), i(3)});
   }
   return triangles;
+}
+
+// Rhino's normals are per vertex; the mesh's are per triangle corner. Unusable ones (zero, not finite)
+// drop them all rather than give a writer a normal it cannot normalise.
+std::vector<Eigen::Vector3d> corner_normals(const std::vector<Eigen::Vector3d>& vertex_normals,
+                                            const std::vector<std::array<int, 3>>& triangles) {
+  for (const auto& n : vertex_normals)
+    if (!n.allFinite() || n.squaredNorm() == 0) return {};
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(3 * triangles.size());
+  for (const auto& t : triangles)
+    for (const int v : t) out.push_back(vertex_normals[static_cast<std::size_t>(v)]);
+  return out;
 }
 
 std::vector<Eigen::Vector3d> float_points(std::string_view bytes) {
@@ -110,16 +124,23 @@ TriangleMesh read_mesh(ArchiveReader& reader) {
   TriangleMesh mesh;
   mesh.triangles = read_faces(reader, static_cast<std::size_t>(fcount), vertex_count);
   if (major == 1) {
-    // Plain ON_3fPoint array (count, then x y z floats); normals, texture coordinates, curvatures and
-    // colours follow and are left unread.
+    // Plain arrays (count, then x y z floats): vertices, then normals (none or one per vertex); texture
+    // coordinates, curvatures and colours follow and are left unread.
     const std::size_t n = reader.count(12);
     if (n != vertex_count) refuse(reader, "vertex array holds " + std::to_string(n) + " points, expected " + std::to_string(vertex_count));
     mesh.positions = float_points(reader.raw(n * 12));
+    const std::size_t normal_count = reader.count(12);
+    const std::vector<Eigen::Vector3d> normals = float_points(reader.raw(normal_count * 12));
+    if (normal_count == vertex_count) mesh.corner_normals = corner_normals(normals, mesh.triangles);
     return mesh;
   }
   if (vertex_count > 0) {
     mesh.positions = float_points(read_compressed_buffer(reader, vertex_count * 12, "ON_Mesh vertex buffer"));
-    for (int k = 0; k < 4; ++k) skip_compressed_buffer(reader);  // normals, texture coordinates, curvatures, colours
+    if (mesh.positions.size() != vertex_count) refuse(reader, "vertex buffer missing");
+    const std::vector<Eigen::Vector3d> normals =
+        float_points(read_compressed_buffer(reader, vertex_count * 12, "ON_Mesh normal buffer"));
+    if (!normals.empty()) mesh.corner_normals = corner_normals(normals, mesh.triangles);
+    for (int k = 0; k < 3; ++k) skip_compressed_buffer(reader);  // texture coordinates, curvatures, colours
   }
   if (minor >= 2) reader.i32();  // packed texture rotation
   if (minor >= 3) {

@@ -1,7 +1,8 @@
 #pragma once
 // Rhino's ON_Mesh as a TriangleMesh: its vertices (the double-precision copy when the file has a valid
-// one, else the single-precision floats) and its faces, quads split into two triangles (0 1 2, 0 2 3).
-// Normals, texture coordinates, curvatures, colours and n-gons are read past, not kept.
+// one, else the single-precision floats), its faces, quads split into two triangles (0 1 2, 0 2 3), and
+// its vertex normals as corner normals when it has them (all finite and non-zero; otherwise none).
+// Texture coordinates, curvatures, colours and n-gons are read past, not kept.
 #include "core/triangle_mesh.hpp"
 #include "formats/3dm/archive_reader.hpp"
 

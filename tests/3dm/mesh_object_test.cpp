@@ -1,4 +1,4 @@
-// ON_Mesh objects in files Rhino wrote. Reference figures from McNeel's rhino3dm 8 (npm, OpenNURBS) reading
+// ON_Mesh objects in files Rhino wrote and hand-built ones. Reference figures from McNeel's rhino3dm 8 (npm, OpenNURBS) reading
 // the same files: vertex count, face count (triangles + quads), bounding box.
 #include "formats/3dm/mesh_object.hpp"
 
@@ -48,6 +48,23 @@ TEST(MeshObject, Rhino8SphereMeshMatchesRhino3dm) {
   EXPECT_NEAR(box.min().x(), -h, 1e-12);
   EXPECT_NEAR(box.max().z(), h, 1e-12);
   for (const auto& p : mesh.positions) EXPECT_NEAR(p.norm(), 25.5047, 1e-4);  // all on one sphere
+  ASSERT_EQ(mesh.corner_normals.size(), 3 * mesh.triangles.size());
+  double radial_min = 1, face_min = 1, length_min = 2, length_max = 0;
+  for (std::size_t c = 0; c < mesh.corner_normals.size(); ++c) {
+    const auto& t = mesh.triangles[c / 3];
+    const auto p = [&](int k) { return mesh.positions[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])]; };
+    const Eigen::Vector3d face = (p(1) - p(0)).cross(p(2) - p(0)).normalized();
+    const Eigen::Vector3d n = mesh.corner_normals[c];
+    radial_min = std::min(radial_min, n.normalized().dot(p(static_cast<int>(c % 3)).normalized()));
+    face_min = std::min(face_min, n.normalized().dot(face));
+    length_min = std::min(length_min, n.norm()), length_max = std::max(length_max, n.norm());
+  }
+  // The mesh is flat-shaded (unwelded corners): its stored unit normals are its triangles' normals, so the
+  // split keeps Rhino's orientation, and they point out of the sphere.
+  EXPECT_GT(face_min, 0.99999);
+  EXPECT_NEAR(length_min, 1.0, 1e-6);
+  EXPECT_NEAR(length_max, 1.0, 1e-6);
+  EXPECT_GT(radial_min, 0.96);
 }
 
 TEST(MeshObject, QuadsSplitInTwoInTheRhino6SubdLogoMeshes) {
@@ -114,10 +131,16 @@ TEST(MeshObject, PlainArraysOfVersion1AndAQuadSplitInTwo) {
   b.put(std::int32_t{2}).put(std::uint16_t{0}).put(std::uint16_t{1}).put(std::uint16_t{2}).put(std::uint16_t{3});
   b.put(std::int32_t{4});
   for (const auto& p : kSquare) b.put(p[0]).put(p[1]).put(p[2]);
+  b.put(std::int32_t{4});  // vertex normals: all +z but the third, -z (to tell corners apart)
+  for (int v = 0; v < 4; ++v) b.put(0.0f).put(0.0f).put(v == 2 ? -1.0f : 1.0f);
   ArchiveReader reader(b.s, "m.3dm", 4);
   const TriangleMesh mesh = read_mesh(reader);
   ASSERT_EQ(mesh.positions.size(), 4u);
   EXPECT_EQ(mesh.positions[2], Eigen::Vector3d(1, 1, 0));
+  ASSERT_EQ(mesh.corner_normals.size(), 6u);  // per corner, following the split: 0 1 2, 0 2 3
+  EXPECT_EQ(mesh.corner_normals[2], Eigen::Vector3d(0, 0, -1));
+  EXPECT_EQ(mesh.corner_normals[4], Eigen::Vector3d(0, 0, -1));
+  EXPECT_EQ(mesh.corner_normals[5], Eigen::Vector3d(0, 0, 1));
   ASSERT_EQ(mesh.triangles.size(), 2u);
   EXPECT_EQ(mesh.triangles[0], (std::array<int, 3>{0, 1, 2}));
   EXPECT_EQ(mesh.triangles[1], (std::array<int, 3>{0, 2, 3}));
