@@ -17,6 +17,9 @@ struct RhinoBrep {
   // edge carries TrimEdgeRef{edge index in this Brep, reversed}; a singular trim (a pole) carries -1.
   std::vector<TrimmedSurface> faces;
   int edge_count = 0;  // TrimEdgeRef::edge < edge_count
+  // Per edge, the file's tolerance: the faces that share the edge meet there within it (0: exactly;
+  // Rhino writes the largest distance it found between the edge and its trims' images).
+  std::vector<double> edge_tolerances;
   // Faces that could not be read or converted, each "face N: reason"; the other faces are kept.
   std::vector<std::string> skipped_faces;
   // (Added by the lead.) The render mesh Rhino stored with each Brep face (ON_Brep chunk version 3.1 on:
