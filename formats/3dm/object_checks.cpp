@@ -94,6 +94,8 @@ void read_control_points(ArchiveReader& reader, const char* class_name, int dime
 }
 
 NurbsCurve nested_curve(ArchiveReader& reader, const char* class_name, const std::string& what) {
+  if (reader.open_chunks() >= kMaxOpenChunks)
+    refuse(reader, class_name, what + " would nest deeper than " + std::to_string(kMaxOpenChunks) + " chunks");
   RhinoGeometry object = read_object(reader);
   if (auto* curve = std::get_if<NurbsCurve>(&object)) return std::move(*curve);
   std::string found = "a surface";

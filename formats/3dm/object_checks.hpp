@@ -43,6 +43,10 @@ void read_control_points(ArchiveReader& reader, const char* class_name, int dime
 
 // Reads the nested object (TCODE_OPENNURBS_CLASS chunk) at the reader's offset with read_object and
 // returns it if it is a curve; refuses anything else, naming `what` ("segment 2") and the class read.
+// Refuses to open one when kMaxOpenChunks chunks are open already: a polycurve of polycurves recurses once
+// per level, and a file of nothing but nested headers would otherwise nest deep enough to overflow the
+// stack (a real file nests a few levels: table, record, object, Brep, its curves).
+inline constexpr int kMaxOpenChunks = 64;
 NurbsCurve nested_curve(ArchiveReader& reader, const char* class_name, const std::string& what);
 
 // openNURBS's ON_Interval (two doubles), refused unless t0 < t1; `what` names it ("domain").

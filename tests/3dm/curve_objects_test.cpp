@@ -4,12 +4,14 @@
 #include "formats/3dm/curve_objects.hpp"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "formats/3dm/rhino_object.hpp"
 #include "formats/3dm/surface_objects.hpp"
+#include "formats/3dm/typecodes.hpp"
 #include "tests/3dm/class_chunks.hpp"
 
 namespace cadnurbs::rhino {
@@ -329,6 +331,48 @@ TEST(CurveObjects, RefusesBadArcsAndPolylines) {
   EXPECT_EQ(error_of(polyline.chunk(), read_polyline_curve),
             "hand.3dm: chunk 0x00027FFA at offset 0: ON_PolylineCurve: parameter 1 (1) does not exceed the one "
             "before (1)");
+}
+
+// An object as WriteObject frames it: class chunk, class id (with its CRC), class data (with its CRC),
+// end. The data is the class's own bytes, then `nested` objects, which a chunk's CRC leaves out.
+std::string object_chunk(const char* class_id, const std::string& own, const std::string& nested = "") {
+  auto with_crc = [](std::uint32_t typecode, const std::string& body, const std::string& after) {
+    ClassData c;
+    c.put(typecode).put(static_cast<std::int64_t>(body.size() + after.size() + 4));
+    c.body += body + after;
+    c.put(static_cast<std::uint32_t>(::crc32(0, reinterpret_cast<const Bytef*>(body.data()), static_cast<uInt>(body.size()))));
+    return c.body;
+  };
+  const Uuid id = uuid_from_text(class_id);
+  const std::string uuid(reinterpret_cast<const char*>(id.bytes.data()), id.bytes.size());
+  ClassData end;
+  end.put(tcode::kOpennurbsClassEnd).put(std::int64_t{0});
+  ClassData object;
+  object.body = with_crc(tcode::kOpennurbsClassUuid, uuid, "") + with_crc(tcode::kOpennurbsClassData, own, nested) + end.body;
+  return object.chunk();
+}
+
+// A polycurve whose one segment is a polycurve whose one segment is ... 200 deep: refused at the nesting
+// limit, before the stack is at risk. Two levels read fine.
+TEST(CurveObjects, RefusesPolyCurvesNestedTooDeep) {
+  ClassData line_data;
+  line_data.put(std::uint8_t{0x10}).doubles({0, 0, 0, 1, 0, 0}).doubles({0, 1}).put(3);
+  std::string inner = object_chunk("4ED7D4DB-E947-11D3-BFE5-0010830122F0", line_data.body);
+  ClassData poly;  // one segment over [0, 1]
+  poly.put(std::uint8_t{0x10}).put(1).put(0).put(0).doubles({0, 0, 0, 0, 0, 0}).put(2).doubles({0, 1});
+  const std::string two_levels_bytes = object_chunk(kPolyCurveId, poly.body, inner);
+  ArchiveReader two_levels_reader(two_levels_bytes, "hand.3dm", 70);
+  const NurbsCurve two_levels = std::get<NurbsCurve>(read_object(two_levels_reader));
+  EXPECT_EQ(two_levels.points[1], Eigen::Vector3d(1, 0, 0));
+  for (int level = 0; level < 200; ++level) inner = object_chunk(kPolyCurveId, poly.body, inner);
+  ArchiveReader deep(inner, "hand.3dm", 70);
+  try {
+    read_object(deep);
+    ADD_FAILURE() << "200 nested polycurves read";
+  } catch (const ArchiveError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(": ON_PolyCurve: segment 0 would nest deeper than 64 chunks"), std::string::npos) << message;
+  }
 }
 
 }  // namespace
