@@ -88,12 +88,14 @@ void read_units_and_tolerances(ArchiveReader& reader, Rhino3dmFile& file) {
                                     : "unknown unit system " + std::to_string(code) + "; millimetres assumed");
 }
 
-// Records of a table up to its TCODE_ENDOFTABLE mark (or the table's end); `read` gets each record's
-// header with the record open and the reader at its body.
+// Calls read(header) for each record of the table the reader is in, up to its TCODE_ENDOFTABLE mark (or
+// the table's end), then steps over the record by its length. `read` reads the record with a reader of its
+// own (record_reader), so that a record it cannot read leaves the table's reader where it was.
 template <class ReadRecord>
 void for_each_record(ArchiveReader& reader, ReadRecord&& read) {
   while (reader.bytes_left() > 0) {
-    const ChunkHeader h = reader.begin_chunk();
+    const ChunkHeader h = reader.peek_chunk();  // refuses a record longer than the table
+    reader.begin_chunk();
     if (h.typecode == tcode::kEndOfTable) break;
     if (h.is_short()) continue;
     read(h);
@@ -101,32 +103,56 @@ void for_each_record(ArchiveReader& reader, ReadRecord&& read) {
   }
 }
 
-void read_settings(ArchiveReader& reader, Rhino3dmFile& file) {
+// A reader inside the record `h` of the table `table` reads.
+ArchiveReader record_reader(const ArchiveReader& table, std::string_view bytes, const ChunkHeader& h) {
+  ArchiveReader reader(bytes, table.name(), table.archive_version(), h.offset);
+  reader.begin_chunk(h.typecode);
+  return reader;
+}
+
+void read_settings(ArchiveReader& reader, std::string_view bytes, Rhino3dmFile& file) {
   for_each_record(reader, [&](const ChunkHeader& h) {
-    if (h.typecode == tcode::kSettingsUnitsAndTolerances) read_units_and_tolerances(reader, file);
+    if (h.typecode != tcode::kSettingsUnitsAndTolerances) return;
+    try {
+      ArchiveReader record = record_reader(reader, bytes, h);
+      read_units_and_tolerances(record, file);
+    } catch (const ArchiveError& e) {
+      file.unit = LengthUnit{};
+      file.warnings.push_back(std::string("units and tolerances unreadable (") + e.what() + "); millimetres assumed");
+    }
   });
 }
 
 // A layer record holds an ON_Layer object: its chunk version 1.x data starts with mode, index, IGES level,
 // material index, an obsolete int, the colour, an obsolete line style (2 shorts, 2 doubles), the name.
-void read_layers(ArchiveReader& reader, Rhino3dmFile& file) {
+Layer read_layer(ArchiveReader& reader) {
+  Layer layer;
+  reader.begin_chunk(tcode::kOpennurbsClass);
+  reader.begin_chunk(tcode::kOpennurbsClassUuid);
+  reader.uuid();
+  reader.end_chunk();
+  reader.begin_chunk(tcode::kOpennurbsClassData);
+  const auto [major, minor] = reader.chunk_version();
+  if (major != 1) reader.fail("ON_Layer: chunk version " + std::to_string(major) + "." + std::to_string(minor) + " is not 1.x");
+  reader.skip(5 * 4);
+  layer.colour = colour_from_bytes(reader.raw(4));
+  reader.skip(2 * 2 + 2 * 8);
+  layer.name = reader.wide_string();
+  return layer;
+}
+
+// A layer that cannot be read keeps its place (objects refer to layers by position) under a made-up name.
+void read_layers(ArchiveReader& reader, std::string_view bytes, Rhino3dmFile& file) {
   for_each_record(reader, [&](const ChunkHeader& h) {
     if (h.typecode != tcode::kLayerRecord) return;
-    Layer layer;
-    reader.begin_chunk(tcode::kOpennurbsClass);
-    reader.begin_chunk(tcode::kOpennurbsClassUuid);
-    reader.uuid();
-    reader.end_chunk();
-    reader.begin_chunk(tcode::kOpennurbsClassData);
-    const auto [major, minor] = reader.chunk_version();
-    if (major != 1) reader.fail("ON_Layer: chunk version " + std::to_string(major) + "." + std::to_string(minor) + " is not 1.x");
-    reader.skip(5 * 4);
-    layer.colour = colour_from_bytes(reader.raw(4));
-    reader.skip(2 * 2 + 2 * 8);
-    layer.name = reader.wide_string();
-    reader.end_chunk();
-    reader.end_chunk();
-    file.layers.push_back(std::move(layer));
+    const std::string placeholder = "layer " + std::to_string(file.layers.size());
+    try {
+      ArchiveReader record = record_reader(reader, bytes, h);
+      file.layers.push_back(read_layer(record));
+    } catch (const ArchiveError& e) {
+      file.warnings.push_back(placeholder + ": " + e.what() + "; named \"" + placeholder + "\"");
+      file.layers.push_back(Layer{placeholder, Colour{}});
+    }
   });
 }
 
@@ -190,20 +216,19 @@ std::string class_at(std::string_view bytes, const std::string& name, int versio
   }
 }
 
-// One TCODE_OBJECT_RECORD, read by a reader of its own so that a failure inside it leaves the table's
-// reader intact: the record's length (already checked against the table) says where the next one starts.
-ObjectRecord read_object_record(std::string_view bytes, const std::string& name, int version, const ChunkHeader& record,
-                                int index, std::vector<std::string>& warnings) {
+// One TCODE_OBJECT_RECORD (see for_each_record): the record type, the object, then its attributes and
+// other chunks up to the end mark.
+ObjectRecord read_object_record(const ArchiveReader& table, std::string_view bytes, const ChunkHeader& h, int index,
+                                std::vector<std::string>& warnings) {
   ObjectRecord out;
   out.index = index;
   out.geometry = Unsupported{"unreadable class"};
-  ArchiveReader reader(bytes, name, version, record.offset);
   const std::string where = "object " + std::to_string(index);
   std::string klass = "no object";
+  ArchiveReader reader = record_reader(table, bytes, h);
   try {
-    reader.begin_chunk(tcode::kObjectRecord);
     reader.begin_chunk(tcode::kObjectRecordType);
-    klass = out.class_name = class_at(bytes, name, version, reader.offset());
+    klass = out.class_name = class_at(bytes, table.name(), table.archive_version(), reader.offset());
     out.geometry = read_object(reader);
   } catch (const ArchiveError& e) {
     warnings.push_back(where + " (" + klass + "): " + e.what() + "; skipped");
@@ -229,17 +254,9 @@ ObjectRecord read_object_record(std::string_view bytes, const std::string& name,
 
 void read_objects(ArchiveReader& reader, std::string_view bytes, Rhino3dmFile& file) {
   int index = 0;
-  while (reader.bytes_left() > 0) {
-    const ChunkHeader h = reader.peek_chunk();  // refuses a record longer than the table
-    if (h.typecode == tcode::kEndOfTable) {
-      reader.begin_chunk();
-      break;
-    }
-    if (h.typecode == tcode::kObjectRecord)
-      file.objects.push_back(read_object_record(bytes, reader.name(), file.archive_version, h, index++, file.warnings));
-    reader.begin_chunk();
-    if (!h.is_short()) reader.end_chunk();
-  }
+  for_each_record(reader, [&](const ChunkHeader& h) {
+    if (h.typecode == tcode::kObjectRecord) file.objects.push_back(read_object_record(reader, bytes, h, index++, file.warnings));
+  });
 }
 
 }  // namespace
@@ -259,8 +276,8 @@ Rhino3dmFile parse_3dm(std::string_view bytes, const std::string& name_for_error
     const ChunkHeader h = reader.begin_chunk();
     if (h.is_short()) continue;
     switch (h.typecode) {
-      case tcode::kSettingsTable: read_settings(reader, file); units_seen = true; break;
-      case tcode::kLayerTable: read_layers(reader, file); break;
+      case tcode::kSettingsTable: read_settings(reader, bytes, file); units_seen = true; break;
+      case tcode::kLayerTable: read_layers(reader, bytes, file); break;
       case tcode::kObjectTable: read_objects(reader, bytes, file); break;
       default: break;  // tables cadnurbs does not need are stepped over by their length
     }

@@ -189,6 +189,20 @@ TEST(RhinoFile, AnObjectThatFailsToReadIsSkippedAndTheNextOnesRead) {
   EXPECT_EQ(f.warnings[0], expected);
 }
 
+TEST(RhinoFile, ALayerThatFailsToReadKeepsItsPlace) {
+  std::string bytes = read_file(corpus("v5_teapot.3dm"));
+  const auto layers = testing::class_chunk_offsets(bytes, "95809813-E985-11D3-BFE5-0010830122F0");  // ON_Layer
+  ASSERT_EQ(layers.size(), 3u);
+  bytes[layers[1] + 12 + 32 + 12] = static_cast<char>(0x70);  // layer chunk version 7.0
+  const Rhino3dmFile f = parse_3dm(bytes, "layer.3dm");
+  EXPECT_EQ(layer_names(f), (std::vector<std::string>{"Lids", "layer 1", "Pots"}));
+  ASSERT_EQ(f.warnings.size(), 1u);
+  EXPECT_EQ(f.warnings[0], "layer 1: layer.3dm: chunk 0x0002FFFC at offset " + std::to_string(layers[1] + 44) +
+                               ": ON_Layer: chunk version 7.0 is not 1.x; named \"layer 1\"");
+  EXPECT_EQ(f.objects.size(), 3u);
+  EXPECT_EQ(f.objects[2].attributes.layer_index, 1);
+}
+
 TEST(RhinoFile, ACorruptedByteUnderACrcIsCaught) {
   std::string bytes = read_file(corpus("mesh.3dm"));
   const auto meshes = testing::class_chunk_offsets(bytes, "4ED7D4E4-E947-11D3-BFE5-0010830122F0");
