@@ -2,18 +2,20 @@
 // Test helpers for the class readers: finding the objects of one class in a corpus .3dm file by scanning
 // its bytes for the class id inside a TCODE_OPENNURBS_CLASS_UUID chunk (also the objects nested in Breps,
 // polycurves and revolutions) and opening a reader at the class data, so that a class reader can be
-// tested on real files independently of the table and Brep readers; hand-built class data and the
-// message it is refused with.
+// tested on real files independently of the table and Brep readers; hand-built class data and objects,
+// and the message they are refused with.
 #include <cstring>
 #include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <zlib.h>
+
 #include "core/nurbs_curve.hpp"
 #include "formats/3dm/archive_reader.hpp"
-#include "formats/common/file_io.hpp"
 #include "formats/3dm/typecodes.hpp"
+#include "formats/common/file_io.hpp"
 
 namespace cadnurbs::rhino::testing {
 
@@ -92,6 +94,25 @@ std::string error_of(const std::string& bytes, Read read) {
     return e.what();
   }
   return "no error";
+}
+
+// An object as WriteObject frames it: class chunk, class id (with its CRC), class data (with its CRC),
+// end. The data is the class's own bytes, then `nested` objects, which a chunk's CRC leaves out.
+inline std::string object_chunk(const char* class_id, const std::string& own, const std::string& nested = "") {
+  auto with_crc = [](std::uint32_t typecode, const std::string& body, const std::string& after) {
+    ClassData c;
+    c.put(typecode).put(static_cast<std::int64_t>(body.size() + after.size() + 4));
+    c.body += body + after;
+    c.put(static_cast<std::uint32_t>(::crc32(0, reinterpret_cast<const Bytef*>(body.data()), static_cast<uInt>(body.size()))));
+    return c.body;
+  };
+  const Uuid id = uuid_from_text(class_id);
+  const std::string uuid(reinterpret_cast<const char*>(id.bytes.data()), id.bytes.size());
+  ClassData end;
+  end.put(tcode::kOpennurbsClassEnd).put(std::int64_t{0});
+  ClassData object;
+  object.body = with_crc(tcode::kOpennurbsClassUuid, uuid, "") + with_crc(tcode::kOpennurbsClassData, own, nested) + end.body;
+  return object.chunk();
 }
 
 // The straight line a -> b over [t0, t1] as an order-2 NURBS.

@@ -4,7 +4,6 @@
 #include "formats/3dm/curve_objects.hpp"
 
 #include <gtest/gtest.h>
-#include <zlib.h>
 
 #include <cmath>
 #include <numbers>
@@ -22,6 +21,7 @@ using testing::ClassData;
 using testing::corpus_file;
 using testing::error_of;
 using testing::line;
+using testing::object_chunk;
 using testing::reader_at_class_data;
 
 constexpr const char* kNurbsCurveId = "4ED7D4DD-E947-11D3-BFE5-0010830122F0";
@@ -331,25 +331,6 @@ TEST(CurveObjects, RefusesBadArcsAndPolylines) {
   EXPECT_EQ(error_of(polyline.chunk(), read_polyline_curve),
             "hand.3dm: chunk 0x00027FFA at offset 0: ON_PolylineCurve: parameter 1 (1) does not exceed the one "
             "before (1)");
-}
-
-// An object as WriteObject frames it: class chunk, class id (with its CRC), class data (with its CRC),
-// end. The data is the class's own bytes, then `nested` objects, which a chunk's CRC leaves out.
-std::string object_chunk(const char* class_id, const std::string& own, const std::string& nested = "") {
-  auto with_crc = [](std::uint32_t typecode, const std::string& body, const std::string& after) {
-    ClassData c;
-    c.put(typecode).put(static_cast<std::int64_t>(body.size() + after.size() + 4));
-    c.body += body + after;
-    c.put(static_cast<std::uint32_t>(::crc32(0, reinterpret_cast<const Bytef*>(body.data()), static_cast<uInt>(body.size()))));
-    return c.body;
-  };
-  const Uuid id = uuid_from_text(class_id);
-  const std::string uuid(reinterpret_cast<const char*>(id.bytes.data()), id.bytes.size());
-  ClassData end;
-  end.put(tcode::kOpennurbsClassEnd).put(std::int64_t{0});
-  ClassData object;
-  object.body = with_crc(tcode::kOpennurbsClassUuid, uuid, "") + with_crc(tcode::kOpennurbsClassData, own, nested) + end.body;
-  return object.chunk();
 }
 
 // A polycurve whose one segment is a polycurve whose one segment is ... 200 deep: refused at the nesting

@@ -19,6 +19,7 @@ using testing::ClassData;
 using testing::corpus_file;
 using testing::error_of;
 using testing::line;
+using testing::object_chunk;
 using testing::reader_at_class_data;
 
 constexpr const char* kNurbsSurfaceId = "4ED7D4DE-E947-11D3-BFE5-0010830122F0";
@@ -175,6 +176,45 @@ TEST(SurfaceObjects, SyntheticRevolutionAndSum) {
 }
 
 
+
+// ON_LineCurve class data: from, to, domain, dimension 3.
+std::string line_object(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double t0, double t1) {
+  ClassData d;
+  d.put(std::uint8_t{0x10}).doubles({a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), t0, t1}).put(3);
+  return object_chunk("4ED7D4DB-E947-11D3-BFE5-0010830122F0", d.body);
+}
+
+// Hand-built ON_SumSurface and version-1 ON_RevSurface data (no corpus file has them): the nested curves
+// are read through read_object, the sum's CVs are basepoint + P0_i + P1_j, the version-1 revolution's
+// angle parameter is the angle itself.
+TEST(SurfaceObjects, SumSurfaceAndVersionOneRevSurfaceData) {
+  ClassData sum;
+  sum.put(std::uint8_t{0x10}).doubles({10, 20, 30}).doubles({0, 0, 0, 0, 0, 0});
+  const std::string sum_bytes =
+      object_chunk("C4CD5359-446D-4690-9FF5-29059732472B", sum.body,
+                   line_object({0, 0, 0}, {2, 0, 0}, 0, 1) + line_object({0, 0, 0}, {0, 3, 1}, 4, 5));
+  ArchiveReader sum_reader(sum_bytes, "hand.3dm", 70);
+  const NurbsSurface s = std::get<NurbsSurface>(read_object(sum_reader));
+  EXPECT_EQ(s.u_knots, (std::vector<double>{0, 0, 1, 1}));
+  EXPECT_EQ(s.v_knots, (std::vector<double>{4, 4, 5, 5}));
+  EXPECT_EQ(s.point(1, 1), Eigen::Vector3d(12, 23, 31));
+  EXPECT_EQ(s.point(1, 0), Eigen::Vector3d(12, 20, 30));
+  EXPECT_EQ(sum_reader.offset(), sum_bytes.size());
+
+  ClassData rev;  // axis z through the origin, half a turn from pi/2, not transposed, then the profile
+  rev.put(std::uint8_t{0x10}).doubles({0, 0, 0, 0, 0, 1}).doubles({std::numbers::pi / 2, 1.5 * std::numbers::pi});
+  rev.doubles({0, 0, 0, 0, 0, 0}).put(0).put(std::uint8_t{1});
+  const std::string rev_bytes =
+      object_chunk("A16220D3-163B-11D4-8000-0010830122F0", rev.body, line_object({1, 0, 0}, {1, 0, 2}, 0, 2));
+  ArchiveReader rev_reader(rev_bytes, "hand.3dm", 70);
+  const NurbsSurface r = std::get<NurbsSurface>(read_object(rev_reader));
+  EXPECT_EQ(r.u_count, 5);  // two quarter spans
+  EXPECT_EQ(r.u_start(), std::numbers::pi / 2);
+  EXPECT_EQ(r.u_end(), 1.5 * std::numbers::pi);
+  EXPECT_LT((surface_point(r, std::numbers::pi / 2, 0) - Eigen::Vector3d(0, 1, 0)).norm(), 1e-15);
+  EXPECT_LT((surface_point(r, std::numbers::pi, 1) - Eigen::Vector3d(-1, 0, 1)).norm(), 1e-15);
+  EXPECT_LT((surface_point(r, 1.5 * std::numbers::pi, 2) - Eigen::Vector3d(0, -1, 2)).norm(), 1e-15);
+}
 
 TEST(SurfaceObjects, RefusesBadSurfaces) {
   const std::string prefix = "hand.3dm: chunk 0x00027FFA at offset 0: ";
