@@ -7,6 +7,7 @@
 #include "analysis/weld_exact.hpp"
 #include "core/bounding_box.hpp"
 #include "core/repair_trimming_loops.hpp"
+#include "formats/3dm/rhino_scene.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/cnb/cnb_reader.hpp"
 #include "formats/cnb/cnb_writer.hpp"
@@ -56,6 +57,18 @@ BrepTranslation read_mesh_stl(const std::string& path, bool) {
   read.scene.root.name = std::filesystem::path(path).stem().string();
   read.scene.root.shapes.push_back({read.scene.root.name, read_stl(path), std::nullopt});
   return read;
+}
+
+// .3dm: faces left out or repaired are reported as repairs ("object N face K: ..."); the scene's trims were
+// checked face by face (repair_trimming_loops) while it was built.
+BrepTranslation read_rhino_3dm(const std::string& path, bool) {
+  rhino::RhinoScene read = rhino::read_3dm(path);
+  BrepTranslation out;
+  out.scene = std::move(read.scene);
+  out.repairs = std::move(read.warnings);
+  out.face_count = read.face_count;
+  out.degenerated_edges.assign(read.edge_count, false);
+  return out;
 }
 
 BrepTranslation read_compact_binary(const std::string& path, bool) {
@@ -171,6 +184,7 @@ const std::vector<FileFormat>& file_formats() {
       {"Wavefront OBJ", {".obj"}, true, false, false, nullptr, write_as_obj},
       {"STEP", {".step", ".stp"}, false, false, true, read_brep_step, write_as_step},
       {"IGES", {".iges", ".igs"}, false, false, true, read_brep_iges, write_as_iges},
+      {"Rhino 3DM (openNURBS archive, Rhino 1-8)", {".3dm"}, false, false, false, read_rhino_3dm, nullptr},
       {"glTF 2.0 binary (Draco, meshopt or no compression)", {".glb"}, true, false, false, nullptr, write_as_glb, true},
       {"Draco mesh", {".drc"}, true, false, false, nullptr, write_as_drc, true},
       {"cadnurbs compact binary NURBS (docs/cnb.md)", {".cnb"}, false, true, false, read_compact_binary, write_as_cnb, true},

@@ -1,0 +1,39 @@
+#pragma once
+// A .3dm file as a cadnurbs Scene: one node per layer, one node per object under its layer, Breps and
+// Extrusions as trimmed NURBS faces sharing scene-wide edge numbers, in millimetres.
+#include <string>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "formats/3dm/rhino_file.hpp"
+
+namespace cadnurbs::rhino {
+
+struct RhinoScene {
+  Scene scene;  // millimetres; scene.source_unit is the file's unit system
+  // In file order, each one line: the file's own warnings (objects skipped by class), then every face
+  // that was left out ("object 3 'name' face 2: reason") or repaired ("object 3 'name' face 2: what").
+  std::vector<std::string> warnings;
+  int face_count = 0;     // Brep/Extrusion faces in the scene
+  int skipped_faces = 0;  // Brep/Extrusion faces the file has that are not in the scene
+  // Scene-wide edges: TrimEdgeRef::edge < edge_count. Each Brep's edges are numbered after the previous
+  // Brep's, so only faces of one Brep share an edge.
+  int edge_count = 0;
+};
+
+// Takes a parsed file and the name to use for the root node (the file's stem). Returns its scene:
+//  - root: name `root_name`; a child per layer that holds objects (name and colour of the layer), in
+//    layer order; objects whose layer index is not in the table go to the root;
+//  - per object a node (name: the object's name, source_entity "object N" with N its 0-based index in the
+//    object table; colour: the object's own when its colour source is the object) holding its shapes:
+//    one per Brep face ("face K", 1-based), or the one curve, surface or mesh;
+//  - lengths scaled from the file's unit to millimetres (in_unit), knots and trims untouched.
+// Each face's loops go through repair_trimming_loops; a face it refuses is left out with a warning and
+// counted in skipped_faces; the rest of the Brep and the file still convert.
+RhinoScene scene_from_3dm(const Rhino3dmFile& file, const std::string& root_name);
+
+// read_3dm_file(path), then scene_from_3dm with the file's stem. Throws ArchiveError/FileError (one line,
+// naming the file, and for a broken archive the chunk's typecode and offset).
+RhinoScene read_3dm(const std::string& path);
+
+}  // namespace cadnurbs::rhino
