@@ -59,13 +59,15 @@ BrepTranslation read_mesh_stl(const std::string& path, bool) {
   return read;
 }
 
-// .3dm: faces left out or repaired are reported as repairs ("object N face K: ..."); the scene's trims were
-// checked face by face (repair_trimming_loops) while it was built.
+// .3dm: faces written as Rhino's render meshes are fallbacks; faces left out or repaired are reported as
+// repairs ("object N face K: ..."); the scene's trims were checked face by face while it was built.
 BrepTranslation read_rhino_3dm(const std::string& path, bool) {
   rhino::RhinoScene read = rhino::read_3dm(path);
   BrepTranslation out;
   out.scene = std::move(read.scene);
   out.repairs = std::move(read.warnings);
+  for (const auto& meshed : read.meshed_faces)
+    out.fallbacks.push_back({meshed.object, meshed.face, "Brep face", meshed.reason + " (Rhino's render mesh used)"});
   out.face_count = read.face_count;
   out.degenerated_edges.assign(read.edge_count, false);
   return out;

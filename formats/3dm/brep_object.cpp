@@ -310,7 +310,7 @@ TrimSegment to_nurbs_angle(const NurbsCurve& trim, const Revolution& rev, int k,
 TrimmedSurface build_face(int fi, const BrepFace& face, const std::vector<CurveSlot>& curves,
                           const std::vector<SurfaceSlot>& surfaces, const std::vector<BrepTrim>& trims,
                           const std::vector<BrepLoop>& loops) {
-  const std::string entity = "face " + std::to_string(fi);
+  const std::string entity = "face " + std::to_string(fi + 1);
   if (face.surface < 0 || face.surface >= static_cast<int>(surfaces.size()))
     throw GeometryError(entity, "surface index " + std::to_string(face.surface) + " out of range");
   const auto& slot = surfaces[face.surface];
@@ -407,10 +407,12 @@ RhinoBrep read_brep(ArchiveReader& reader) {
   for (std::size_t fi = 0; fi < faces.size(); ++fi) {
     try {
       brep.faces.push_back(build_face(static_cast<int>(fi), faces[fi], curves2d, surfaces, trims, loops));
+      brep.face_indices.push_back(static_cast<int>(fi));
     } catch (const GeometryError& e) {
-      const std::string name = "face " + std::to_string(fi);
+      const std::string name = "face " + std::to_string(fi + 1);
       const std::string what = e.what();
       brep.skipped_faces.push_back(what.rfind(name + " ", 0) == 0 || what.rfind(name + ":", 0) == 0 ? what : name + ": " + what);
+      brep.skipped_face_indices.push_back(static_cast<int>(fi));
     }
   }
   return brep;

@@ -20,12 +20,15 @@ struct RhinoBrep {
   // Per edge, the file's tolerance: the faces that share the edge meet there within it (0: exactly;
   // Rhino writes the largest distance it found between the edge and its trims' images).
   std::vector<double> edge_tolerances;
-  // Faces that could not be read or converted, each "face N: reason"; the other faces are kept.
+  // Per entry of `faces`, its 0-based index among the file's faces (they differ once a face is skipped).
+  std::vector<int> face_indices;
+  // Faces that could not be read or converted, each "face N: reason" (N 1-based); the other faces are kept.
   std::vector<std::string> skipped_faces;
+  std::vector<int> skipped_face_indices;  // per entry of skipped_faces, its index among the file's faces
   // (Added by the lead.) The render mesh Rhino stored with each Brep face (ON_Brep chunk version 3.1 on:
   // an anonymous chunk after the faces, one byte per face, then the ON_Mesh object when the byte is 1),
-  // indexed like the file's faces; empty when the file stores none. Used to check trimmed areas and to mesh
-  // a face that cannot be built.
+  // indexed like the file's faces (face_indices, skipped_face_indices); empty when the file stores none.
+  // Used to check trimmed areas and to mesh a face that cannot be built.
   std::vector<std::optional<TriangleMesh>> render_meshes;
 };
 

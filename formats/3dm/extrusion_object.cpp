@@ -287,6 +287,7 @@ RhinoBrep read_extrusion(ArchiveReader& reader) {
       reader.fail(e.what());
     }
   }
+  for (std::size_t k = 0; k < brep.faces.size(); ++k) brep.face_indices.push_back(static_cast<int>(k));
   return brep;
 }
 

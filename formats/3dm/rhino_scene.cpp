@@ -27,12 +27,32 @@ SceneNode object_node(const ObjectRecord& object, RhinoScene& out) {
       [&](const auto& geometry) {
         using T = std::decay_t<decltype(geometry)>;
         if constexpr (std::is_same_v<T, RhinoBrep>) {
-          for (const auto& reason : geometry.skipped_faces) {
-            out.warnings.push_back(label + " " + reason);
-            ++out.skipped_faces;
-          }
+          // A face that cannot be trimmed NURBS: Rhino's render mesh of it, or nothing.
+          auto fall_back = [&](int file_index, std::string reason) {
+            const int number = file_index + 1;
+            // The reason without the face's own name in front ("face K: ", "object N face K: ").
+            for (const std::string& prefix : {label + " face " + std::to_string(number) + ": ",
+                                              "face " + std::to_string(number) + ": "})
+              if (reason.rfind(prefix, 0) == 0) reason.erase(0, prefix.size());
+            const auto& meshes = geometry.render_meshes;
+            if (file_index < static_cast<int>(meshes.size()) && meshes[file_index]) {
+              Shape shape;
+              shape.source_entity = "face " + std::to_string(number) + " (mesh)";
+              shape.source_type = "Brep face";
+              shape.geometry = *meshes[file_index];
+              node.shapes.push_back(std::move(shape));
+              out.meshed_faces.push_back({label, number, reason});
+              ++out.face_count;
+            } else {
+              out.warnings.push_back(label + " face " + std::to_string(number) + ": left out (no render mesh): " + reason);
+              ++out.skipped_faces;
+            }
+          };
+          for (size_t k = 0; k < geometry.skipped_faces.size(); ++k)
+            fall_back(geometry.skipped_face_indices.at(k), geometry.skipped_faces[k]);
           for (size_t k = 0; k < geometry.faces.size(); ++k) {
-            const std::string entity = label + " face " + std::to_string(k + 1);
+            const int file_index = geometry.face_indices.at(k);
+            const std::string entity = label + " face " + std::to_string(file_index + 1);
             TrimmedSurface face = geometry.faces[k];
             for (auto& loop : face.loops)
               for (auto& edge : loop.edges)
@@ -40,12 +60,11 @@ SceneNode object_node(const ObjectRecord& object, RhinoScene& out) {
             try {
               for (const auto& line : repair_trimming_loops(face, entity)) out.warnings.push_back(entity + ": " + line);
             } catch (const GeometryError& e) {
-              out.warnings.push_back(entity + ": left out: " + e.what());
-              ++out.skipped_faces;
+              fall_back(file_index, e.what());
               continue;
             }
             Shape shape;
-            shape.source_entity = "face " + std::to_string(k + 1);
+            shape.source_entity = "face " + std::to_string(file_index + 1);
             shape.source_type = "Brep face";
             shape.geometry = std::move(face);
             node.shapes.push_back(std::move(shape));

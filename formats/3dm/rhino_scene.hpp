@@ -14,8 +14,16 @@ struct RhinoScene {
   // In file order, each one line: the file's own warnings (objects skipped by class), then every face
   // that was left out ("object 3 'name' face 2: reason") or repaired ("object 3 'name' face 2: what").
   std::vector<std::string> warnings;
-  int face_count = 0;     // Brep/Extrusion faces in the scene
-  int skipped_faces = 0;  // Brep/Extrusion faces the file has that are not in the scene
+  // A Brep face that could not be a trimmed NURBS surface and is in the scene as the render mesh Rhino
+  // stored with it ("face K (mesh)").
+  struct MeshedFace {
+    std::string object;  // "object N" or "object N 'name'"
+    int face = 0;        // K, 1-based among the Brep's faces in the file
+    std::string reason;
+  };
+  std::vector<MeshedFace> meshed_faces;
+  int face_count = 0;     // Brep/Extrusion faces in the scene: trimmed NURBS + meshed_faces
+  int skipped_faces = 0;  // Brep/Extrusion faces the file has that are not in the scene (no render mesh)
   // Scene-wide edges: TrimEdgeRef::edge < edge_count. Each Brep's edges are numbered after the previous
   // Brep's, so only faces of one Brep share an edge.
   int edge_count = 0;
@@ -28,8 +36,9 @@ struct RhinoScene {
 //    object table; colour: the object's own when its colour source is the object) holding its shapes:
 //    one per Brep face ("face K", 1-based), or the one curve, surface or mesh;
 //  - lengths scaled from the file's unit to millimetres (in_unit), knots and trims untouched.
-// Each face's loops go through repair_trimming_loops; a face it refuses is left out with a warning and
-// counted in skipped_faces; the rest of the Brep and the file still convert.
+// Each face's loops go through repair_trimming_loops. A face that the Brep reader could not build or that
+// repair refuses becomes Rhino's render mesh of it when the file stores one (meshed_faces), else it is
+// left out with a warning (skipped_faces); the rest of the Brep and the file still convert.
 RhinoScene scene_from_3dm(const Rhino3dmFile& file, const std::string& root_name);
 
 // read_3dm_file(path), then scene_from_3dm with the file's stem. Throws ArchiveError/FileError (one line,
