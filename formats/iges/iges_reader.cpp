@@ -27,6 +27,7 @@
 #include "formats/brep/reader_plumbing.hpp"
 #include "formats/brep/xcaf_to_scene.hpp"
 #include "formats/common/file_io.hpp"
+#include "formats/iges/iges_precheck.hpp"
 
 namespace cadnurbs {
 
@@ -142,6 +143,7 @@ BrepTranslation read_plain(const std::string& path, const std::string& stem) {
 BrepTranslation read_iges(const std::string& path) {
   prepare_occt();
   check_framing(path);
+  precheck_iges_file(path);  // what OCCT's reader would misread or allocate for blindly
   const std::string stem = std::filesystem::path(path).stem().string();
   return read_xcaf_or_plain(
       path, "IGES", [&] { return read_with_xcaf(path, stem); }, [&] { return read_plain(path, stem); });

@@ -26,6 +26,7 @@
 #include "formats/brep/reader_plumbing.hpp"
 #include "formats/brep/xcaf_to_scene.hpp"
 #include "formats/common/file_io.hpp"
+#include "formats/step/step_precheck.hpp"
 
 namespace cadnurbs {
 
@@ -116,6 +117,7 @@ BrepTranslation read_plain(const std::string& path, const std::string& stem) {
 BrepTranslation read_step(const std::string& path) {
   prepare_occt();
   check_framing(path);
+  precheck_step_file(path);  // what OCCT's parser would crash or hang on
   const std::string stem = std::filesystem::path(path).stem().string();
   return read_xcaf_or_plain(
       path, "STEP", [&] { return read_with_xcaf(path, stem); }, [&] { return read_plain(path, stem); });
