@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "converters/walled_read.hpp"
+
 namespace cadnurbs {
 
 std::string Arguments::value(const std::string& name, const std::string& fallback) const {
@@ -28,6 +30,21 @@ int Arguments::integer(const std::string& name, int fallback) const {
   const double x = number(name, fallback);
   if (x != std::floor(x)) throw UsageError("--" + name + " needs a whole number, not '" + values.at(name) + "'");
   return static_cast<int>(x);
+}
+
+const char* const kReadLimitHelp =
+    "  --time-limit S      STEP/IGES: give up reading after S seconds, of wall or CPU time (default 120);\n"
+    "                      OpenCASCADE reads in a child process, so a crash or a hang in it is reported\n"
+    "  --memory-limit MB   STEP/IGES: the reading process's address-space limit (default 4096)\n";
+
+void apply_read_limits(const Arguments& a) {
+  ReadLimits& limits = read_limits();
+  limits.seconds = a.number("time-limit", limits.seconds);
+  if (!(limits.seconds > 0)) throw UsageError("--time-limit needs a positive number of seconds, not '" + a.value("time-limit") + "'");
+  const double megabytes = a.number("memory-limit", static_cast<double>(limits.megabytes));
+  if (!(megabytes >= 1 && megabytes <= 1099511627776.0) || megabytes != std::floor(megabytes))
+    throw UsageError("--memory-limit needs a whole number of megabytes from 1, not '" + a.value("memory-limit") + "'");
+  limits.megabytes = static_cast<long>(megabytes);
 }
 
 Arguments parse_arguments(const std::string& command, const std::vector<std::string>& args,

@@ -25,6 +25,14 @@ struct Arguments {
   int integer(const std::string& name, int fallback) const;        // refuses non-integers
 };
 
+// --time-limit S and --memory-limit MB of convert, info and report (value options of theirs): sets
+// read_limits() (converters/walled_read) for the STEP/IGES reads. Refuses (UsageError) a limit that is not
+// positive, or a memory limit above 2^40 MB.
+void apply_read_limits(const Arguments& a);
+
+// Their help lines.
+extern const char* const kReadLimitHelp;
+
 // `value_options` take a value ("-o" counts as "--output"); `flag_options` take none. Throws
 // UsageError "<command>: unknown option '--x'" and the like.
 Arguments parse_arguments(const std::string& command, const std::vector<std::string>& args,

@@ -51,7 +51,8 @@ std::string help() {
          "                      mesh is made within 0.7 D and the coarsest grid that moves no vertex by more\n"
          "                      than 0.3 D is taken, so the decoded mesh stays within D (metres, +Y up in .glb)\n"
          "A STEP/IGES face that cannot be written as a trimmed NURBS is written as a mesh instead;\n"
-         "convert lists each such face and says how many there were.\n";
+         "convert lists each such face and says how many there were.\n" +
+         kReadLimitHelp;
 }
 
 // The share of D a quantising format's mesh is tessellated to (the rest is the quantisation's).
@@ -68,7 +69,8 @@ void print_compaction(const std::string& out, const CompactReport& r) {
 }  // namespace
 
 int run_convert(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("convert", args, {"output", "steps", "precision", "deviation", "display-deviation", "units", "compress"},
+  const Arguments a = parse_arguments("convert", args, {"output", "steps", "precision", "deviation", "display-deviation", "units", "compress",
+                                       "time-limit", "memory-limit"},
                                       {"mesh", "euclidean", "self-contained", "exact-nurbs", "pretty", "check-areas", "help"});
   if (a.has("help")) {
     std::cout << help();
@@ -96,6 +98,7 @@ int run_convert(const std::vector<std::string>& args) {
   input_format(in);
 
   const bool homogeneous = !a.has("euclidean");
+  apply_read_limits(a);
   const BrepTranslation loaded = load_scene(in, homogeneous);
   for (const auto& line : loaded.repairs) std::cerr << in << ": " << line << "\n";
   for (const auto& f : loaded.fallbacks)

@@ -5,6 +5,7 @@
 #include "analysis/mesh_encoding.hpp"
 #include "analysis/tessellation_hints.hpp"
 #include "analysis/weld_exact.hpp"
+#include "converters/walled_read.hpp"
 #include "core/bounding_box.hpp"
 #include "core/repair_trimming_loops.hpp"
 #include "formats/3dm/rhino_scene.hpp"
@@ -49,8 +50,9 @@ TriangleMesh flatten_meshes(const Scene& scene, const std::string& path) {
   return all;
 }
 
-BrepTranslation read_brep_step(const std::string& path, bool) { return read_step(path); }
-BrepTranslation read_brep_iges(const std::string& path, bool) { return read_iges(path); }
+// Behind the wall in the cadnurbs command (a crash or hang in OCCT costs a child process), see walled_read.
+BrepTranslation read_brep_step(const std::string& path, bool) { return read_brep(path, "STEP"); }
+BrepTranslation read_brep_iges(const std::string& path, bool) { return read_brep(path, "IGES"); }
 
 BrepTranslation read_mesh_stl(const std::string& path, bool) {
   BrepTranslation read;

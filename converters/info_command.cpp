@@ -11,7 +11,7 @@ namespace cadnurbs {
 
 namespace {
 const char* kHelp =
-    "usage: cadnurbs info IN [--euclidean]\n"
+    "usage: cadnurbs info IN [--euclidean] [--time-limit S] [--memory-limit MB]\n"
     "Lists the shapes of IN: the source surface type (STEP/IGES), degrees, control points, knots,\n"
     "trimming loops, meshes, the bounding box, the units and the area (NURBS: integrated over the\n"
     "trimmed domain).\n";
@@ -22,12 +22,13 @@ std::string degrees(const NurbsSurface& s) {
 }  // namespace
 
 int run_info(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("info", args, {}, {"euclidean", "help"});
+  const Arguments a = parse_arguments("info", args, {"time-limit", "memory-limit"}, {"euclidean", "help"});
   if (a.has("help")) {
-    std::cout << kHelp;
+    std::cout << kHelp << kReadLimitHelp;
     return 0;
   }
   if (a.positional.size() != 1) throw UsageError("needs one input file (see --help)");
+  apply_read_limits(a);
   const Scene scene = read_scene(a.positional[0], !a.has("euclidean"));
   std::cout << a.positional[0] << "\n";
   double total_area = 0;

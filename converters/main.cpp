@@ -4,6 +4,7 @@
 
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
+#include "converters/walled_read.hpp"
 
 namespace {
 
@@ -34,6 +35,10 @@ int main(int argc, char** argv) {
     std::cout << kUsage;
     return 0;
   }
+  // The hidden child side of the STEP/IGES wall (converters/walled_read): this executable serves it, so
+  // its reads go through the wall.
+  if (std::string(argv[1]) == "__read-brep") return run_read_brep_child(std::vector<std::string>(argv + 2, argv + argc));
+  enable_read_wall();
   const auto command = commands.find(argv[1]);
   if (command == commands.end()) {
     std::cerr << "cadnurbs: unknown command '" << argv[1] << "'\n" << kUsage;

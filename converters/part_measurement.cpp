@@ -334,7 +334,7 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
                               ") as a mesh: " + f.reason);
   const Scene& scene = loaded.scene;
   record.unit = scene.unit.name;
-  record.diagonal = scene_bounding_box(scene).diagonal().norm();
+  record.diagonal = checked_diagonal(scene, input);
   record.deviation = options.deviation_mm / scene.unit.millimetres;
   if (!(record.deviation > 0) || !std::isfinite(record.deviation))
     throw std::invalid_argument("the maximum deviation must be a positive number");
@@ -402,6 +402,8 @@ PartRecord measure_part(const std::string& input, const PartMeasurementOptions& 
     failed.input = input;
     failed.failed = true;
     failed.error = e.what();
+    // The record names the input already: keep the reason, not the reader's "<input>: " before it.
+    if (failed.error.starts_with(input + ": ")) failed.error.erase(0, input.size() + 2);
     if (views) *views = {};
     return failed;
   }

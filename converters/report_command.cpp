@@ -14,7 +14,7 @@ namespace {
 
 const char* kHelp =
     "usage: cadnurbs report IN... [--deviation D] [--format md|json|csv|html] [-o FILE] [--files DIR]\n"
-    "                       [--records DIR] [--curve]\n"
+    "                       [--records DIR] [--curve] [--time-limit S] [--memory-limit MB]\n"
     "For each part: what NURBS and meshes cost at the same accuracy, in floats (counted as seed 001,\n"
     "6.1 counts them) and in bytes of files actually written and read back (raw and gzip'd), with the\n"
     "deviation of every mesh measured after reading it back.\n"
@@ -57,12 +57,14 @@ constexpr int kSomeFailed = 3;
 }  // namespace
 
 int run_report(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("report", args, {"output", "deviation", "format", "files", "records"},
+  const Arguments a = parse_arguments("report", args, {"output", "deviation", "format", "files", "records", "time-limit",
+                                       "memory-limit"},
                                       {"curve", "help"});
   if (a.has("help")) {
-    std::cout << kHelp;
+    std::cout << kHelp << kReadLimitHelp;
     return 0;
   }
+  apply_read_limits(a);
   if (a.positional.empty()) throw UsageError("needs at least one input (see --help)");
   const std::string layout = layout_name(a);
   if (!layouts().count(layout)) throw UsageError("--format: unknown format '" + layout + "' (md, json, csv, html)");

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/bounding_box.hpp"
+#include "formats/common/file_io.hpp"
 
 namespace cadnurbs {
 
@@ -13,6 +15,26 @@ double written_tolerance(const Scene& scene, int significant_digits) {
   if (significant_digits <= 0) return 1e-6 * diagonal;
   const double largest = box.isEmpty() ? 1.0 : std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
   return 0.5 * std::pow(10.0, 1 - significant_digits) * std::max(largest, 1e-300);
+}
+
+double checked_diagonal(const Scene& scene, const std::string& in) {
+  const auto box = scene_bounding_box(scene);
+  if (box.isEmpty()) return 0.0;
+  if (!box.min().allFinite() || !box.max().allFinite())
+    throw FileError(in + ": a coordinate is not finite once placed (a transform overflows)");
+  const double largest = std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
+  if (largest > kLargestCoordinate) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3g", largest);
+    throw FileError(in + ": the part's size is not finite in double precision (coordinates up to " + text +
+                    "; squared lengths overflow beyond 1e+150): scale it down");
+  }
+  return box.diagonal().norm();
+}
+
+double default_deviation(double diagonal, const std::string& in) {
+  if (!(diagonal > 0)) throw FileError(in + ": all points coincide: give --deviation");
+  return 1e-3 * diagonal;
 }
 
 CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, double max_deviation,

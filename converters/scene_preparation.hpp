@@ -14,6 +14,18 @@ namespace cadnurbs {
 // the largest coordinate.
 double written_tolerance(const Scene& scene, int significant_digits);
 
+// The bounding-box diagonal of the scene read from `in`, once its coordinates are known to be usable:
+// every placed control point and vertex finite and below kLargestCoordinate, so that the lengths,
+// squared lengths and areas derived from them stay finite. Throws FileError naming `in`: "<in>: a
+// coordinate is not finite once placed (a transform overflows)" or "<in>: the part's size is not finite
+// in double precision (coordinates up to 1e+308; squared lengths overflow beyond 1e+150): scale it down".
+double checked_diagonal(const Scene& scene, const std::string& in);
+constexpr double kLargestCoordinate = 1e150;  // its square, and sums of squares, stay below DBL_MAX
+
+// The default maximum deviation: 1e-3 of `diagonal` (checked_diagonal). Throws FileError "<in>: all
+// points coincide: give --deviation" when the diagonal is 0 and so no size can be derived from it.
+double default_deviation(double diagonal, const std::string& in);
+
 struct CertifiedMesh {
   Scene meshes;                 // one TriangleMesh shape per face; tree, names and colours kept
   TessellationReport report;

@@ -5,6 +5,7 @@
 #include <TopExp_Explorer.hxx>
 
 #include "formats/brep/occt_errors.hpp"
+#include "formats/brep/read_stage.hpp"
 #include "formats/common/file_io.hpp"
 
 namespace cadnurbs {
@@ -14,6 +15,7 @@ bool has_faces(const TopoDS_Shape& shape) { return !shape.IsNull() && TopExp_Exp
 TopoDS_Shape transfer_roots(XSControl_Reader& reader, const std::string& path) {
   const int roots = reader.NbRootsForTransfer();
   if (roots == 0) throw FileError(path + ": no shape in the file (no transferable roots)");
+  report_read_stage("transfer");
   const int transferred = reader.TransferRoots();
   const TopoDS_Shape shape = reader.OneShape();
   if (transferred == 0 || shape.IsNull())

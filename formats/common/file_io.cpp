@@ -1,22 +1,35 @@
 #include "formats/common/file_io.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace cadnurbs {
 
+std::uint64_t regular_file_size(const std::string& path) {
+  struct stat status {};
+  if (::stat(path.c_str(), &status) != 0) throw FileError(path + ": cannot open (" + std::strerror(errno) + ")");
+  const auto type = status.st_mode & S_IFMT;
+  if (type == S_IFREG) return static_cast<std::uint64_t>(status.st_size);
+  if (type == S_IFDIR) throw FileError(path + ": is a directory");
+  const char* kind = type == S_IFCHR ? "character device" : type == S_IFBLK ? "block device"
+                   : type == S_IFIFO ? "FIFO" : type == S_IFSOCK ? "socket" : "unknown type";
+  throw FileError(path + ": not a regular file (" + kind + ")");
+}
+
 std::string read_file(const std::string& path) {
+  const std::uint64_t size = regular_file_size(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(path + ": cannot open (" + std::strerror(errno) + ")");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
+  std::string bytes(size, '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(size));
   if (in.bad()) throw FileError(path + ": read failed");
-  return buffer.str();
+  bytes.resize(static_cast<std::size_t>(in.gcount()));  // shorter when the file shrank meanwhile
+  return bytes;
 }
 
 void write_file_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {

@@ -1,5 +1,6 @@
 #pragma once
 // Whole-file reading and atomic writing shared by every format.
+#include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -13,7 +14,14 @@ class FileError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The whole file as bytes. Throws FileError "<path>: cannot open (<reason>)".
+// The size in bytes of the regular file at `path` (symbolic links followed), looked at before anything
+// opens it: a device or FIFO may never end or may block the open, and a directory holds no bytes.
+// Throws FileError "<path>: is a directory", "<path>: not a regular file (character device)" (or block
+// device, FIFO, socket), or "<path>: cannot open (<reason>)".
+std::uint64_t regular_file_size(const std::string& path);
+
+// The whole file as bytes, at most its size when opened (a file growing meanwhile is not followed).
+// Refuses what regular_file_size refuses.
 std::string read_file(const std::string& path);
 
 // Writes `bytes` to a temporary file beside `path` and renames it over `path`, so an interrupted

@@ -2,7 +2,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 
 #include "formats/common/file_io.hpp"
@@ -12,8 +11,7 @@ namespace cadnurbs {
 namespace {
 
 std::ifstream open(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) throw FileError(path + ": cannot open (is a directory)");
+  regular_file_size(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(path + ": cannot open (" + std::strerror(errno) + ")");
   return in;

@@ -6,7 +6,7 @@
 namespace cadnurbs {
 
 // Up to `count` bytes from the start of the file ("" for an empty file).
-// Throws FileError "<path>: cannot open (<reason>)".
+// Refuses what regular_file_size (file_io.hpp) refuses.
 std::string file_head(const std::string& path, std::size_t count);
 
 // Up to `count` bytes from the end of the file. Same refusal.

@@ -24,6 +24,7 @@
 #include "core/length_unit.hpp"
 #include "formats/brep/occt_errors.hpp"
 #include "formats/brep/occt_setup.hpp"
+#include "formats/brep/read_stage.hpp"
 #include "formats/brep/reader_plumbing.hpp"
 #include "formats/brep/xcaf_to_scene.hpp"
 #include "formats/common/file_io.hpp"
@@ -92,6 +93,7 @@ LengthUnit file_unit(const IGESControl_Reader& reader) {
 }
 
 void read_model(IGESControl_Reader& reader, const std::string& path) {
+  report_read_stage("parse");
   const IFSelect_ReturnStatus status = reader.ReadFile(path.c_str());
   if (status != IFSelect_RetDone) throw FileError(path + ": IGES read failed: " + read_status_text(status));
   refuse_unresolved_references(reader.WS()->ModelCheckList(), reader.IGESModel(), path, "IGES");
@@ -116,6 +118,7 @@ std::optional<BrepTranslation> read_with_xcaf(const std::string& path, const std
   reader.SetLayerMode(false);
   read_model(reader, path);
   if (reader.NbRootsForTransfer() == 0) throw FileError(path + ": no shape in the file (no transferable roots)");
+  report_read_stage("transfer");
   if (!reader.Transfer(document)) return std::nullopt;
   Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   TDF_LabelSequence free_labels;

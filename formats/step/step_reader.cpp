@@ -23,6 +23,7 @@
 #include "formats/common/file_probe.hpp"
 #include "formats/brep/occt_errors.hpp"
 #include "formats/brep/occt_setup.hpp"
+#include "formats/brep/read_stage.hpp"
 #include "formats/brep/reader_plumbing.hpp"
 #include "formats/brep/xcaf_to_scene.hpp"
 #include "formats/common/file_io.hpp"
@@ -59,6 +60,7 @@ LengthUnit file_unit(STEPControl_Reader& reader) {
 
 // Reads the file into `reader`, refusing what OCCT could not read.
 void read_model(STEPControl_Reader& reader, const std::string& path) {
+  report_read_stage("parse");
   const IFSelect_ReturnStatus status = reader.ReadFile(path.c_str());
   if (status != IFSelect_RetDone) throw FileError(path + ": STEP read failed: " + read_status_text(status));
   const Handle(StepData_StepModel) model = reader.StepModel();
@@ -89,6 +91,7 @@ std::optional<BrepTranslation> read_with_xcaf(const std::string& path, const std
   reader.SetViewMode(false);
   read_model(reader.ChangeReader(), path);
   if (reader.NbRootsForTransfer() == 0) throw FileError(path + ": no shape in the file (no transferable roots)");
+  report_read_stage("transfer");
   if (!reader.Transfer(document)) return std::nullopt;
   Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   TDF_LabelSequence free_labels;

@@ -245,7 +245,7 @@ class AsciiParser {
       fail(std::string("expected '") + keyword + "' in facet " + std::to_string(facets_) + ", found " + quoted(token));
   }
 
-  // Three numbers; refuses a token that is not a number or is out of the range of double.
+  // Three numbers; refuses a token that is not a number, is out of the range of double or is not finite.
   Eigen::Vector3d vec3(const std::string& what) {
     Eigen::Vector3d v;
     for (int i = 0; i < 3; ++i) {
@@ -257,6 +257,8 @@ class AsciiParser {
         fail("expected a number for " + what + " in facet " + std::to_string(facets_) + ", found " + quoted(token));
       if (ec == std::errc::result_out_of_range)
         fail("number out of range for " + what + " in facet " + std::to_string(facets_) + ": " + quoted(token));
+      if (!std::isfinite(value))  // from_chars reads "inf" and "nan" too
+        fail("number not finite for " + what + " in facet " + std::to_string(facets_) + ": " + quoted(token));
       v[i] = value;
     }
     return v;
@@ -288,11 +290,10 @@ TriangleMesh parse_stl(const std::string& bytes, const std::string& name_for_err
 }
 
 TriangleMesh read_stl(const std::string& path, StlReadOptions options) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  // The size the file has: no read goes past it (a device or FIFO is refused before it is opened).
+  const std::uint64_t size = regular_file_size(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(path + ": cannot open (" + std::strerror(errno) + ")");
-  const std::streamoff end = in.tellg();
-  if (end < 0 || !in.seekg(0)) throw FileError(path + ": read failed");
-  const auto size = static_cast<std::uint64_t>(end);
   // A binary file is read a block of facets at a time, not whole: its bytes would double the memory.
   std::string bytes(std::min<std::uint64_t>(size, kHeaderBytes), '\0');
   if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) throw FileError(path + ": read failed");

@@ -179,6 +179,8 @@ class ClassicParser {
       if (!std::isfinite(value)) fail(token.line, "field " + field.text + ": '" + token.text + "' is not a finite number");
       return value;
     }
+    if (result.ec == std::errc::result_out_of_range && result.ptr == last)
+      fail(token.line, "field " + field.text + ": '" + token.text + "' is out of the range of double");
     // Hexadecimal integers (0x1F) are legal VRML too.
     const bool negative = *first == '-';
     const char* digits = first + (negative ? 1 : 0);

@@ -1,0 +1,141 @@
+// Inputs an attacker (or an unlucky archive) gives the command: things that are not regular files,
+// numbers that are not finite or too large to compute with, NURBS curves meeting a triangles-only
+// format. Each is refused (or handled) with one stderr line naming the input, the right exit status and
+// no output left behind. Every input is made here, at test time (issue 13).
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "command_fixture.hpp"
+
+namespace cadnurbs::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class HostileInput : public CommandTest {
+ protected:
+  void write(const std::string& name, const std::string& text) const { std::ofstream(path(name)) << text; }
+  bool exists(const std::string& name) const { return fs::exists(path(name)); }
+  // Runs `cadnurbs COMMAND`; expects exit status 1, exactly `error` on stderr and no file `output` left.
+  void expect_refused(const std::string& command, const std::string& error, const std::string& output = "") {
+    const CommandResult r = run(command);
+    EXPECT_EQ(r.status, 1) << command;
+    EXPECT_EQ(r.err, error) << command;
+    if (!output.empty()) EXPECT_FALSE(exists(output)) << command;
+  }
+};
+
+// An ASCII STL of one triangle with `corner` as its first vertex.
+std::string stl_triangle(const std::string& corner) {
+  return "solid t\n facet normal 0 0 1\n  outer loop\n   vertex " + corner +
+         "\n   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\nendsolid t\n";
+}
+
+// An X3D classic file of one triangle whose first point is `corner`.
+std::string x3dv_triangle(const std::string& corner) {
+  return "#X3D V3.0 utf8\nPROFILE Immersive\nShape { geometry IndexedFaceSet { coordIndex [0 1 2 -1]\n"
+         "  coord Coordinate { point [" + corner + ", 1 0 0, 0 1 0] } } }\n";
+}
+
+TEST_F(HostileInput, DirectoriesAreReportedAsDirectoriesByEveryCommand) {
+  fs::create_directory(path("x.step"));
+  fs::create_directory(path("d.stl"));
+  const std::string dir = path("x.step"), stl_dir = path("d.stl");
+  expect_refused("info " + dir, "cadnurbs info: " + dir + ": is a directory\n");
+  expect_refused("convert " + dir + " -o " + path("out.x3dv"), "cadnurbs convert: " + dir + ": is a directory\n", "out.x3dv");
+  expect_refused("normals " + stl_dir + " -o " + path("n.wrl"), "cadnurbs normals: " + stl_dir + ": is a directory\n", "n.wrl");
+  expect_refused("fit-loop " + stl_dir + " -o " + path("c.obj"), "cadnurbs fit-loop: " + stl_dir + ": is a directory\n",
+                 "c.obj");
+  // report measures the inputs it can and lists the others as failed (status 3), each named once.
+  const CommandResult r = run("report " + dir + " -o " + path("r.md"));
+  EXPECT_EQ(r.status, 3);
+  EXPECT_EQ(r.err, "cadnurbs report: " + dir + ": is a directory\ncadnurbs report: 1 of 1 inputs failed\n");
+}
+
+TEST_F(HostileInput, ADeviceNamedStlIsRefusedBeforeAnyRead) {
+  // Read, /dev/zero never ends: the run used to grow to 4.2 GB and die with std::bad_alloc.
+  fs::create_symlink("/dev/zero", path("zero.stl"));
+  const std::string zero = path("zero.stl");
+  expect_refused("info " + zero, "cadnurbs info: " + zero + ": not a regular file (character device)\n");
+  expect_refused("convert " + zero + " -o " + path("out.x3dv"),
+                 "cadnurbs convert: " + zero + ": not a regular file (character device)\n", "out.x3dv");
+}
+
+TEST_F(HostileInput, AFifoIsRefusedWithoutOpeningIt) {
+  // Opening a FIFO blocks until a writer comes: no writer ever comes here.
+  ASSERT_EQ(::mkfifo(path("pipe.wrl").c_str(), 0600), 0);
+  const std::string pipe = path("pipe.wrl");
+  expect_refused("convert " + pipe + " -o " + path("out.x3dv"), "cadnurbs convert: " + pipe + ": not a regular file (FIFO)\n",
+                 "out.x3dv");
+  expect_refused("info " + pipe, "cadnurbs info: " + pipe + ": not a regular file (FIFO)\n");
+}
+
+TEST_F(HostileInput, NumbersThatAreNotFiniteAreRefusedWhereTheyAreRead) {
+  write("inf.stl", stl_triangle("inf 0 0"));
+  expect_refused("convert " + path("inf.stl") + " -o " + path("out.x3dv"),
+                 "cadnurbs convert: " + path("inf.stl") + ": line 4: number not finite for vertex 1 in facet 1: 'inf'\n",
+                 "out.x3dv");
+  write("nan.x3dv", x3dv_triangle("nan 0 0"));
+  expect_refused("convert " + path("nan.x3dv") + " -o " + path("out.x3dv"),
+                 "cadnurbs convert: " + path("nan.x3dv") + ": line 4: field point: expected a number, found 'nan'\n",
+                 "out.x3dv");
+  write("big.x3dv", x3dv_triangle("1e309 0 0"));
+  expect_refused("info " + path("big.x3dv"),
+                 "cadnurbs info: " + path("big.x3dv") + ": line 4: field point: '1e309' is out of the range of double\n");
+}
+
+TEST_F(HostileInput, CoordinatesTooLargeToMeasureAreRefusedNamingTheInput) {
+  // 1e308 is a finite double, but the part's diagonal (and every squared length) is not: before, the
+  // writer found it ("OUT.x3dv: cannot write a number that is not finite"), or, with --mesh, an internal
+  // check of the default deviation (inf) that named no file.
+  const std::string expected = ": the part's size is not finite in double precision (coordinates up to 1e+308; "
+                               "squared lengths overflow beyond 1e+150): scale it down\n";
+  write("huge.stl", stl_triangle("1e308 -1e308 0"));
+  write("huge.x3dv", x3dv_triangle("-1e308 1e308 0"));
+  for (const std::string in : {path("huge.stl"), path("huge.x3dv")}) {
+    for (const std::string options : {"", " --mesh"})
+      expect_refused("convert " + in + options + " -o " + path("out.x3dv"), "cadnurbs convert: " + in + expected, "out.x3dv");
+    expect_refused("info " + in, "cadnurbs info: " + in + expected);
+    const CommandResult report = run("report " + in + " -o " + path("r.md"));
+    EXPECT_EQ(report.status, 3);
+    EXPECT_EQ(report.err, "cadnurbs report: " + in + expected + "cadnurbs report: 1 of 1 inputs failed\n");
+  }
+}
+
+TEST_F(HostileInput, APartWhosePointsCoincideAsksForADeviation) {
+  // No size, so no default deviation (0 of the diagonal); the mesh needs one.
+  write("point.x3dv", "#X3D V3.0 utf8\nPROFILE Immersive\nShape { geometry NurbsPatchSurface {\n"
+                      "  uOrder 2 vOrder 2 uDimension 2 vDimension 2\n"
+                      "  controlPoint Coordinate { point [1 2 3, 1 2 3, 1 2 3, 1 2 3] } } }\n");
+  expect_refused("convert " + path("point.x3dv") + " --mesh -o " + path("out.x3dv"),
+                 "cadnurbs convert: " + path("point.x3dv") + ": all points coincide: give --deviation\n", "out.x3dv");
+}
+
+TEST_F(HostileInput, MeshOutputLeavesNurbsCurvesOutWithOneNoteNotWrongAdvice) {
+  // An unmodified corpus file: NURBS surfaces and NURBS curves. --mesh was given, so the old advice
+  // "shape '' is NURBS; this format holds triangles only (use --mesh)" was wrong.
+  const std::string in = std::string(CADNURBS_SHARED_DIR) + "/corpus/vrml/nurbs_weights.x3dv";
+  const CommandResult r = run("convert " + in + " --mesh -o " + path("x.stl"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, in + ": 2 NURBS curves left out: STL holds triangles only\n");
+  EXPECT_TRUE(exists("x.stl"));
+  // A format that holds curves keeps them.
+  const CommandResult wrl = run("convert " + in + " --mesh -o " + path("x.x3dv"));
+  EXPECT_EQ(wrl.status, 0) << wrl.err;
+  EXPECT_EQ(wrl.err, "");
+  EXPECT_NE(read_file(path("x.x3dv")).find("NurbsCurve"), std::string::npos);
+}
+
+TEST_F(HostileInput, ARefusedTrimmingLoopIsReportedNamingTheInput) {
+  // door.x3dv's loop lies far outside its surface's domain; the refusal used to name only the shape.
+  const std::string door = std::string(CADNURBS_SHARED_DIR) + "/corpus/vrml/door.x3dv";
+  const CommandResult r = run("info " + door);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err.rfind("cadnurbs info: " + door + ": scene/node 0/shape 0: trimming loop 0 leaves the surface's domain", 0), 0u)
+      << r.err;
+}
+
+}  // namespace
+}  // namespace cadnurbs::test
