@@ -66,6 +66,23 @@ void print_compaction(const std::string& out, const CompactReport& r) {
             << r.instanced << " repeated parts placed as copies\n";
 }
 
+// "STL" for "part.stl".
+std::string upper_extension(const std::string& path) {
+  std::string name = file_extension(path).substr(1);
+  for (auto& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return name;
+}
+
+// Takes the NURBS curves out of `node` and its children (a format that holds triangles only has no place
+// for them); returns how many.
+int drop_curves(SceneNode& node) {
+  const auto before = node.shapes.size();
+  std::erase_if(node.shapes, [](const Shape& shape) { return std::holds_alternative<NurbsCurve>(shape.geometry); });
+  int dropped = static_cast<int>(before - node.shapes.size());
+  for (auto& child : node.children) dropped += drop_curves(child);
+  return dropped;
+}
+
 }  // namespace
 
 int run_convert(const std::vector<std::string>& args) {
@@ -117,21 +134,22 @@ int run_convert(const std::vector<std::string>& args) {
     options.compression = a.value("compress");
   }
   const auto box = scene_bounding_box(scene);
+  const double diagonal = checked_diagonal(scene, in);
   // The mesh keeps the NURBS file's Viewpoint so that both render from the same place.
   options.viewpoint = framing_viewpoint(box);
-  options.display_deviation = display_deviation >= 0 ? display_deviation : 1e-3 * box.diagonal().norm();
+  options.display_deviation = display_deviation >= 0 ? display_deviation : 1e-3 * diagonal;
   // --deviation asks for a mesh, except for a NURBS format that quantises (.cnb): there it is its bound.
   const bool nurbs_within_deviation = format.quantises && !format.meshes_only;
   const bool mesh = a.has("mesh") || a.has("steps") || (a.has("deviation") && !nurbs_within_deviation) ||
                     format.meshes_only;
-  if (nurbs_within_deviation) options.quantisation_budget = deviation > 0 ? deviation : 1e-3 * box.diagonal().norm();
+  if (nurbs_within_deviation) options.quantisation_budget = deviation > 0 ? deviation : default_deviation(diagonal, in);
   Scene written;
   std::string how;
   if (mesh && steps > 0) {
     written = tessellate_uniform(scene, steps);
     how = ", uniform " + std::to_string(steps) + " steps per span";
   } else if (mesh) {
-    const double d = deviation > 0 ? deviation : 1e-3 * box.diagonal().norm();
+    const double d = deviation > 0 ? deviation : default_deviation(diagonal, in);
     const bool check_areas = a.has("check-areas");
     // A quantising writer gets its share of D: the mesh at 0.7 D, vertices moved by at most 0.3 D.
     const double tessellated = format.quantises ? kTessellationShare * d : d;
@@ -161,6 +179,12 @@ int run_convert(const std::vector<std::string>& args) {
     print_compaction(out, report);
   } else {
     written = scene;
+  }
+  if (format.meshes_only) {
+    const int curves = drop_curves(written.root);
+    if (curves > 0)
+      std::cerr << in << ": " << curves << " NURBS curve" << (curves == 1 ? "" : "s") << " left out: "
+                << upper_extension(out) << " holds triangles only\n";
   }
   write_scene(out, written, options);
   const SceneCounts c = count_entities(written);

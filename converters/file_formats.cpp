@@ -7,6 +7,7 @@
 #include "analysis/weld_exact.hpp"
 #include "converters/walled_read.hpp"
 #include "core/bounding_box.hpp"
+#include "core/geometry_error.hpp"
 #include "core/repair_trimming_loops.hpp"
 #include "formats/3dm/rhino_scene.hpp"
 #include "formats/common/file_io.hpp"
@@ -41,6 +42,8 @@ TriangleMesh flatten_meshes(const Scene& scene, const std::string& path) {
     TriangleMesh m;
     if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry)) m = *mesh;
     else if (const auto* polygons = std::get_if<PolygonMesh>(&shape.geometry)) m = triangulated(*polygons);
+    else if (std::holds_alternative<NurbsCurve>(shape.geometry))
+      throw FileError(path + ": shape '" + display_name(shape) + "' is a NURBS curve; this format holds triangles only");
     else throw FileError(path + ": shape '" + display_name(shape) + "' is NURBS; this format holds triangles only (use --mesh)");
     for (auto& p : m.positions) p = world * p;
     if (!m.corner_normals.empty())
@@ -234,11 +237,17 @@ const FileFormat& output_format(const std::string& path) {
 }
 
 BrepTranslation load_scene(const std::string& path, bool homogeneous_control_points) {
+  regular_file_size(path);  // a directory, device or FIFO is refused by type, whatever reads the format
   BrepTranslation loaded = input_format(path).read(path, homogeneous_control_points);
   // The one check of trimming loops before any writer or tessellation. STEP/IGES faces (face_count > 0)
   // passed it already, face by face, where a refused face can still be meshed by OCCT.
-  if (loaded.face_count == 0)
-    for (auto& line : repair_trimming_loops(loaded.scene)) loaded.repairs.push_back(std::move(line));
+  if (loaded.face_count == 0) {
+    try {
+      for (auto& line : repair_trimming_loops(loaded.scene)) loaded.repairs.push_back(std::move(line));
+    } catch (const GeometryError& e) {
+      throw FileError(path + ": " + e.what());  // the message names the input, as every reader's does
+    }
+  }
   return loaded;
 }
 
