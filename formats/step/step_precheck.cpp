@@ -324,7 +324,7 @@ class StepScanner {
     for (const Reference& reference : references_)
       if (defined_.count(static_cast<std::int32_t>(reference.target)) == 0)
         fail_at(reference.line, reference.entity, reference.type,
-                "#" + std::to_string(reference.target) + " is referred to but the file does not define it");
+                "refers to #" + std::to_string(reference.target) + ", which the file lacks");
   }
 
   std::string_view s_;

@@ -103,7 +103,7 @@ TEST_F(StepPrecheck, DanglingReferenceIsRefused) {
   const std::string vertex = "#19 = VERTEX_POINT('',#20);";
   EXPECT_EQ(refusal(replaced(original_, vertex, "#19 = VERTEX_POINT('',#999999);")),
             path() + ": line " + std::to_string(line_of(original_, vertex)) +
-                ", #19 VERTEX_POINT: #999999 is referred to but the file does not define it");
+                ", #19 VERTEX_POINT: refers to #999999, which the file lacks");
 }
 
 TEST_F(StepPrecheck, UnterminatedStringIsRefusedAtItsStart) {
