@@ -1,6 +1,7 @@
 // What the STEP/IGES wall (converters/walled_read) costs: every corpus STEP and IGES file converted to
 // .x3dv by `convert`'s pipeline in a fresh process, once reading in-process and once through the wall,
 // alternately, side by side in one run; prints each file's fastest times and the ratio of the totals.
+// `walled_read_overhead [ROUNDS [FILE...]]`: 3 rounds and every corpus file by default.
 // This executable is its own child: `walled_read_overhead in-process|walled IN OUT` converts one file,
 // and it serves `__read-brep` for the wall.
 #include <algorithm>
@@ -8,7 +9,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
 #include <vector>
 
 #include "converters/commands.hpp"
@@ -34,14 +34,13 @@ int main(int argc, char** argv) {
   if (!args.empty() && args[0] == "__read-brep") return run_read_brep_child({args.begin() + 1, args.end()});
   if (args.size() == 3 && (args[0] == "in-process" || args[0] == "walled")) {
     enable_read_wall(args[0] == "walled");
-    std::ostringstream quiet;
-    std::cout.rdbuf(quiet.rdbuf());
     return run_convert({args[1], "-o", args[2]});
   }
   const int rounds = args.empty() ? 3 : std::atoi(args[0].c_str());
-  std::vector<std::string> files;
-  for (const char* folder : {CADNURBS_SHARED_DIR "/corpus/step", CADNURBS_SHARED_DIR "/corpus/iges"})
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) files.push_back(entry.path().string());
+  std::vector<std::string> files(args.size() > 1 ? args.begin() + 1 : args.end(), args.end());  // default: all
+  if (files.empty())
+    for (const char* folder : {CADNURBS_SHARED_DIR "/corpus/step", CADNURBS_SHARED_DIR "/corpus/iges"})
+      for (const auto& entry : std::filesystem::directory_iterator(folder)) files.push_back(entry.path().string());
   std::sort(files.begin(), files.end());
   const std::string self = std::filesystem::canonical("/proc/self/exe").string();
   const std::string out = (std::filesystem::temp_directory_path() / "walled_read_overhead.x3dv").string();
