@@ -245,7 +245,8 @@ class AsciiParser {
       fail(std::string("expected '") + keyword + "' in facet " + std::to_string(facets_) + ", found " + quoted(token));
   }
 
-  // Three numbers; refuses a token that is not a number, is out of the range of double or is not finite.
+  // Three numbers; refuses a token that is not a number or is out of the range of double ("inf" and "nan"
+  // are read, and refused with the vertex named once the facet is complete).
   Eigen::Vector3d vec3(const std::string& what) {
     Eigen::Vector3d v;
     for (int i = 0; i < 3; ++i) {
@@ -257,8 +258,6 @@ class AsciiParser {
         fail("expected a number for " + what + " in facet " + std::to_string(facets_) + ", found " + quoted(token));
       if (ec == std::errc::result_out_of_range)
         fail("number out of range for " + what + " in facet " + std::to_string(facets_) + ": " + quoted(token));
-      if (!std::isfinite(value))  // from_chars reads "inf" and "nan" too
-        fail("number not finite for " + what + " in facet " + std::to_string(facets_) + ": " + quoted(token));
       v[i] = value;
     }
     return v;

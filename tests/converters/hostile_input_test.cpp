@@ -75,7 +75,7 @@ TEST_F(HostileInput, AFifoIsRefusedWithoutOpeningIt) {
 TEST_F(HostileInput, NumbersThatAreNotFiniteAreRefusedWhereTheyAreRead) {
   write("inf.stl", stl_triangle("inf 0 0"));
   expect_refused("convert " + path("inf.stl") + " -o " + path("out.x3dv"),
-                 "cadnurbs convert: " + path("inf.stl") + ": line 4: number not finite for vertex 1 in facet 1: 'inf'\n",
+                 "cadnurbs convert: " + path("inf.stl") + ": line 4: vertex 1 of facet 1 is not finite\n",
                  "out.x3dv");
   write("nan.x3dv", x3dv_triangle("nan 0 0"));
   expect_refused("convert " + path("nan.x3dv") + " -o " + path("out.x3dv"),
