@@ -20,6 +20,7 @@
 #include "analysis/tessellate_to_deviation.hpp"
 #include "analysis/weld_exact.hpp"
 #include "core/bounding_box.hpp"
+#include "closed_solid.hpp"
 #include "corpus_manifest.hpp"
 #include "formats/iges/iges_reader.hpp"
 #include "formats/step/step_reader.hpp"
@@ -31,27 +32,6 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// A node is a closed solid when its faces use every non-degenerated edge of the B-rep exactly twice,
-// once each way.
-bool closed_solid(const SceneNode& node, const std::vector<bool>& degenerated) {
-  std::map<int, std::pair<int, int>> uses;  // edge -> (uses, uses against its direction)
-  for (const auto& shape : node.shapes) {
-    const auto* t = std::get_if<TrimmedSurface>(&shape.geometry);
-    if (!t) return false;
-    for (const auto& loop : t->loops)
-      for (const auto& ref : loop.edges) {
-        // No edge: a gap closure or pole bridge formats/brep added; its cracks, if any, show below.
-        if (ref.edge < 0 || degenerated[ref.edge]) continue;
-        ++uses[ref.edge].first;
-        if (ref.reversed) ++uses[ref.edge].second;
-      }
-  }
-  if (uses.empty()) return false;
-  for (const auto& [edge, count] : uses)
-    if (count.first != 2 || count.second != 1) return false;
-  return true;
 }
 
 struct Watertightness {

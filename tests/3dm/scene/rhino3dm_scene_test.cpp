@@ -15,6 +15,7 @@
 #include "analysis/weld_exact.hpp"
 #include "core/bounding_box.hpp"
 #include "formats/3dm/rhino_scene.hpp"
+#include "tests/brep/closed_solid.hpp"
 
 namespace cadnurbs::rhino {
 namespace {
@@ -25,25 +26,6 @@ std::string corpus(const std::string& name) { return std::string(CADNURBS_SHARED
 void collect_objects(const SceneNode& node, std::map<std::string, const SceneNode*>& out) {
   if (node.source_entity.rfind("object ", 0) == 0) out[node.source_entity] = &node;
   for (const auto& child : node.children) collect_objects(child, out);
-}
-
-// A node is a closed solid when its faces use every edge exactly twice, once each way.
-bool closed_solid(const SceneNode& node) {
-  std::map<int, std::pair<int, int>> uses;
-  for (const auto& shape : node.shapes) {
-    const auto* t = std::get_if<TrimmedSurface>(&shape.geometry);
-    if (!t) return false;
-    for (const auto& loop : t->loops)
-      for (const auto& ref : loop.edges) {
-        if (ref.edge < 0) continue;
-        ++uses[ref.edge].first;
-        if (ref.reversed) ++uses[ref.edge].second;
-      }
-  }
-  if (uses.empty()) return false;
-  for (const auto& [edge, count] : uses)
-    if (count.first != 2 || count.second != 1) return false;
-  return true;
 }
 
 struct Expected {
@@ -99,7 +81,7 @@ TEST_P(RhinoCorpus, NoFaceLeftOutAreasMatchRenderMeshesAndMeshesAreWatertight) {
   collect_objects(meshed.root, meshed_objects);
   int closed = 0;
   for (const auto& [entity, node] : objects) {
-    if (!closed_solid(*node)) continue;
+    if (!test::closed_solid(*node)) continue;
     ++closed;
     TriangleMesh solid;
     for (const auto& shape : meshed_objects.at(entity)->shapes)
