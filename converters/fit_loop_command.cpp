@@ -5,6 +5,7 @@
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
 #include "converters/file_formats.hpp"
+#include "converters/scene_preparation.hpp"
 #include "converters/loop_fit_measurement.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/obj/loop_control_obj.hpp"
@@ -72,6 +73,8 @@ int run_fit_loop(const std::vector<std::string>& args) {
   const Scene scene = read_scene(mesh_path);
   const TriangleMesh triangles = scene_triangles(scene);
   if (triangles.triangles.empty()) throw FileError(mesh_path + ": no triangles to fit");
+  checked_mesh_diagonal(triangles, mesh_path);
+  request.source = mesh_path;
   LoopControlMesh saved;
   if (from_saved) {
     saved = read_loop_control_obj(in);

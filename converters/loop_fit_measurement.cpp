@@ -5,6 +5,7 @@
 #include "analysis/mesh_distance.hpp"
 #include "analysis/subdivision/loop_limit_surface.hpp"
 #include "analysis/weld_vertices.hpp"
+#include "formats/common/file_io.hpp"
 
 namespace cadnurbs {
 
@@ -19,6 +20,7 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
   LoopFitMeasure m;
   const double weld = request.weld_tolerance >= 0 ? request.weld_tolerance : 100 * default_weld_tolerance(triangles);
   const TriangleMesh input = weld_vertices(triangles, weld);
+  if (input.triangles.empty()) throw FileError(request.source + ": every triangle collapses when welded at " + std::to_string(weld));
   m.input_vertices = static_cast<int>(input.positions.size());
   m.input_triangles = static_cast<int>(input.triangles.size());
 

@@ -2,6 +2,8 @@
 // The whole Loop fit of a triangle mesh, as `fit-loop` and `report` run it: weld, decimate with
 // features kept, fit, and measure the limit surface against the input next to a plain quadric
 // decimation with as many vertices (the thing a user would otherwise publish).
+#include <string>
+
 #include "analysis/loop_fit/decimate_control_mesh.hpp"
 #include "analysis/loop_fit/fit_loop_surface.hpp"
 #include "analysis/loop_fit/fit_loop_to_tolerance.hpp"
@@ -20,6 +22,7 @@ struct LoopFitRequest {
   // up to 6e-5 of the diagonal in the corpus's OCC bottle).
   double weld_tolerance = -1;
   const LoopControlMesh* saved_control = nullptr;  // given: no fit, only its limit surface measured
+  std::string source = "the mesh";                 // the input file, for messages
 };
 
 struct LoopFitMeasure {

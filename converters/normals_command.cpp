@@ -9,6 +9,7 @@
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
 #include "converters/file_formats.hpp"
+#include "converters/scene_preparation.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/stl/stl_reader.hpp"
 
@@ -52,10 +53,14 @@ int run_normals(const std::vector<std::string>& args) {
   const TriangleMesh triangles =
       stl ? read_stl(in, {.facet_normals = false, .merge_equal_points = true}) : scene_triangles(scene);
   if (triangles.triangles.empty()) throw FileError(in + ": no triangles to give normals to");
+  checked_mesh_diagonal(triangles, in);
   WeldReport weld;
   const double tol = a.has("weld") ? tolerance : default_weld_tolerance(triangles);
+  const TriangleMesh welded = weld_vertices(triangles, tol, &weld);
+  if (welded.triangles.empty())
+    throw FileError(in + ": every triangle collapses when welded at " + a.value("weld", std::to_string(tol)));
   OrientReport orient;
-  const TriangleMesh oriented = orient_faces(weld_vertices(triangles, tol, &weld), &orient);
+  const TriangleMesh oriented = orient_faces(welded, &orient);
   CreaseNormalsReport creases;
   const TriangleMesh shaded = with_crease_normals(oriented, degrees * M_PI / 180.0, &creases);
 

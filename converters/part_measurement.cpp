@@ -295,6 +295,7 @@ void measure_mesh_input(PartRecord& record, const Scene& scene, const Folder& fo
 
   LoopFitRequest request;
   request.tolerance = record.deviation;
+  request.source = record.input;
   request.control_vertices = std::max(4, std::min(request.control_vertices, static_cast<int>(record.mesh.vertices) / 2));
   const LoopFitMeasure fit = measure_loop_fit(input, request);
   const fs::path path = folder.file(stem + "-loop-control", ".obj");

@@ -17,8 +17,9 @@ double written_tolerance(const Scene& scene, int significant_digits) {
   return 0.5 * std::pow(10.0, 1 - significant_digits) * std::max(largest, 1e-300);
 }
 
-double checked_diagonal(const Scene& scene, const std::string& in) {
-  const auto box = scene_bounding_box(scene);
+namespace {
+
+double checked_box_diagonal(const Eigen::AlignedBox3d& box, const std::string& in) {
   if (box.isEmpty()) return 0.0;
   if (!box.min().allFinite() || !box.max().allFinite())
     throw FileError(in + ": a coordinate is not finite once placed (a transform overflows)");
@@ -30,6 +31,20 @@ double checked_diagonal(const Scene& scene, const std::string& in) {
                     "; squared lengths overflow beyond 1e+150): scale it down");
   }
   return box.diagonal().norm();
+}
+
+}  // namespace
+
+double checked_diagonal(const Scene& scene, const std::string& in) {
+  return checked_box_diagonal(scene_bounding_box(scene), in);
+}
+
+double checked_mesh_diagonal(const TriangleMesh& mesh, const std::string& in) {
+  Eigen::AlignedBox3d box;
+  for (const auto& p : mesh.positions) box.extend(p);
+  const double diagonal = checked_box_diagonal(box, in);
+  if (!(diagonal > 0)) throw FileError(in + ": all points coincide: every triangle is degenerate");
+  return diagonal;
 }
 
 double default_deviation(double diagonal, const std::string& in) {

@@ -22,6 +22,10 @@ double written_tolerance(const Scene& scene, int significant_digits);
 double checked_diagonal(const Scene& scene, const std::string& in);
 constexpr double kLargestCoordinate = 1e150;  // its square, and sums of squares, stay below DBL_MAX
 
+// checked_diagonal of a triangle mesh read from `in` (normals, fit-loop), refusing also a mesh whose
+// points all coincide: "<in>: all points coincide: every triangle is degenerate".
+double checked_mesh_diagonal(const TriangleMesh& mesh, const std::string& in);
+
 // The default maximum deviation: 1e-3 of `diagonal` (checked_diagonal). Throws FileError "<in>: all
 // points coincide: give --deviation" when the diagonal is 0 and so no size can be derived from it.
 double default_deviation(double diagonal, const std::string& in);

@@ -11,7 +11,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <iostream>
 #include <memory>
 #include <new>
 #include <thread>
@@ -83,13 +86,22 @@ void take_lines(std::string& pending, ChildReport& report) {
   }
 }
 
-// Sets everything up in the forked child and execs; never returns.
-[[noreturn]] void exec_child(int stream_fd, int stage_fd, const ReadLimits& limits, char* const* argv) {
+// True when this process runs one thread. Only then may a fork run OCCT without exec: no lock another
+// thread held at the fork stays locked in the child, and no thread pool's workers go missing there.
+bool single_threaded() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("Threads:", 0) == 0) return std::atoi(line.c_str() + 8) == 1;
+  return false;
+}
+
+// In the forked child: its own process group, the pipes on fds 3 and 4, stdin/stdout/stderr on
+// /dev/null (OCCT prints; the parent speaks for the child), the CPU, address-space and core limits.
+void prepare_child(int stream_fd, int stage_fd, const ReadLimits& limits) {
   ::setpgid(0, 0);
   // Fds 3 and 4 may be the pipes themselves: move them out of the way first.
   const int stream = ::fcntl(stream_fd, F_DUPFD, 10), stage = ::fcntl(stage_fd, F_DUPFD, 10);
   if (stream < 0 || stage < 0 || ::dup2(stream, kStreamFd) < 0 || ::dup2(stage, kStageFd) < 0) _exit(126);
-  // OCCT prints to stdout and stderr; the parent speaks for the child.
   const int null = ::open("/dev/null", O_RDWR);
   if (null < 0 || ::dup2(null, 0) < 0 || ::dup2(null, 1) < 0 || ::dup2(null, 2) < 0) _exit(126);
   const rlim_t cpu = static_cast<rlim_t>(std::ceil(limits.seconds));
@@ -99,8 +111,6 @@ void take_lines(std::string& pending, ChildReport& report) {
   ::setrlimit(RLIMIT_CPU, &cpu_limit);
   ::setrlimit(RLIMIT_AS, &memory_limit);
   ::setrlimit(RLIMIT_CORE, &no_core);
-  ::execv("/proc/self/exe", argv);
-  _exit(127);
 }
 
 // The child's outcome as the one-line error, or empty when it read the file.
@@ -127,6 +137,44 @@ std::string outcome(const std::string& path, int status, bool timed_out, const C
   return path + ": the reading process failed while " + stage + " (exit status " + std::to_string(code) + ")";
 }
 
+// The child's work, in a fork or after exec: reads `path`, writes the translation stream to fd 3 and the
+// stage lines to fd 4, and ends the process (0 read, 1 refused).
+[[noreturn]] void serve_read(const std::string& format, const std::string& path) {
+  std::string fault_stage, fault_action;
+  if (const char* fault = std::getenv("CADNURBS_WALL_FAULT")) {
+    const std::string text = fault;
+    fault_stage = text.substr(0, text.find(':'));
+    fault_action = text.find(':') == std::string::npos ? "" : text.substr(text.find(':') + 1);
+  }
+  std::set_new_handler([] {
+    write_all(kStageFd, "memory\n");
+    _exit(3);
+  });
+  set_read_stage_listener([&](const std::string& stage) {
+    write_all(kStageFd, "stage " + stage + "\n");
+    if (stage != fault_stage) return;
+    if (fault_action == "segv" || fault_action == "xcpu") {
+      const int signal = fault_action == "segv" ? SIGSEGV : SIGXCPU;
+      ::signal(signal, SIG_DFL);  // OCCT's handler would turn it into an exception
+      ::raise(signal);
+    } else if (fault_action == "sleep") {
+      for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+    } else if (fault_action == "alloc") {
+      // Address space, not pages: untouched blocks reach the limit without using the machine's memory.
+      for (std::vector<std::unique_ptr<char[]>> hog;;) hog.emplace_back(new char[1 << 20]);
+    }
+  });
+  try {
+    write_all(kStreamFd, write_translation_stream(read_in_process(path, format)));
+  } catch (const std::exception& error) {
+    std::string line = error.what();
+    for (char& c : line) if (c == '\n') c = ' ';
+    write_all(kStageFd, "error " + line + "\n");
+    _exit(1);
+  }
+  _exit(0);  // no OCCT static destructors: nothing of them is needed, and they are not always quick
+}
+
 BrepTranslation read_walled(const std::string& path, const std::string& format) {
   const ReadLimits limits = read_limits();
   int stream_pipe[2], stage_pipe[2];
@@ -136,11 +184,22 @@ BrepTranslation read_walled(const std::string& path, const std::string& format) 
     ::close(stream_pipe[1]);
     throw FileError(path + ": cannot start the reading process (" + std::strerror(errno) + ")");
   }
-  // argv is made before fork: the child may only make async-signal-safe calls until it execs.
+  // A single-threaded process forks and reads in the copy: it has this executable and OCCT loaded already
+  // (starting them again costs 0.1-0.5 s, more than most reads). Otherwise the child execs itself
+  // (`__read-brep`) and may only make async-signal-safe calls until then; argv is made before the fork.
+  const bool read_in_fork = single_threaded() && !std::getenv("CADNURBS_WALL_EXEC");  // the variable: for tests
   std::string name = "cadnurbs", subcommand = "__read-brep", format_arg = format, path_arg = path;
   char* argv[] = {name.data(), subcommand.data(), format_arg.data(), path_arg.data(), nullptr};
+  std::cout.flush();  // what the parent has buffered must not be written again by the child
+  std::cerr.flush();
+  std::fflush(nullptr);
   const pid_t child = ::fork();
-  if (child == 0) exec_child(stream_pipe[1], stage_pipe[1], limits, argv);
+  if (child == 0) {
+    prepare_child(stream_pipe[1], stage_pipe[1], limits);
+    if (read_in_fork) serve_read(format, path);
+    ::execv("/proc/self/exe", argv);
+    _exit(127);
+  }
   ::close(stream_pipe[1]);
   ::close(stage_pipe[1]);
   if (child < 0) {
@@ -207,38 +266,7 @@ BrepTranslation read_brep(const std::string& path, const std::string& format) {
 
 int run_read_brep_child(const std::vector<std::string>& args) {
   if (args.size() != 2) return 2;
-  std::string fault_stage, fault_action;
-  if (const char* fault = std::getenv("CADNURBS_WALL_FAULT")) {
-    const std::string text = fault;
-    fault_stage = text.substr(0, text.find(':'));
-    fault_action = text.find(':') == std::string::npos ? "" : text.substr(text.find(':') + 1);
-  }
-  std::set_new_handler([] {
-    write_all(kStageFd, "memory\n");
-    _exit(3);
-  });
-  set_read_stage_listener([&](const std::string& stage) {
-    write_all(kStageFd, "stage " + stage + "\n");
-    if (stage != fault_stage) return;
-    if (fault_action == "segv") {
-      ::signal(SIGSEGV, SIG_DFL);  // OCCT's handler would turn it into an exception
-      ::raise(SIGSEGV);
-    } else if (fault_action == "sleep") {
-      for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
-    } else if (fault_action == "alloc") {
-      // Address space, not pages: untouched blocks reach the limit without using the machine's memory.
-      for (std::vector<std::unique_ptr<char[]>> hog;;) hog.emplace_back(new char[1 << 20]);
-    }
-  });
-  try {
-    write_all(kStreamFd, write_translation_stream(read_in_process(args[1], args[0])));
-  } catch (const std::exception& error) {
-    std::string line = error.what();
-    for (char& c : line) if (c == '\n') c = ' ';
-    write_all(kStageFd, "error " + line + "\n");
-    _exit(1);
-  }
-  _exit(0);  // no OCCT static destructors: nothing of them is needed, and they are not always quick
+  serve_read(args[0], args[1]);
 }
 
 }  // namespace cadnurbs

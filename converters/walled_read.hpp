@@ -1,7 +1,8 @@
 #pragma once
-// STEP/IGES reads behind a wall: OCCT runs in a child process (this executable again, with the hidden
-// subcommand `__read-brep FORMAT PATH`) under CPU-time, wall-time and address-space limits, and hands the
-// result back as a translation stream (formats/scene_stream). A crash, a hang or a limit in OCCT then costs
+// STEP/IGES reads behind a wall: OCCT runs in a child process under CPU-time, wall-time and address-space
+// limits, and hands the result back as a translation stream (formats/scene_stream). The child is a plain
+// fork when the process runs one thread (as convert and info do when they read), else this executable
+// again with the hidden subcommand `__read-brep FORMAT PATH` (fork and exec). A crash, a hang or a limit in OCCT then costs
 // the child, not the command, and becomes one line naming the file, the stage and the reason.
 #include <string>
 #include <vector>
@@ -34,8 +35,9 @@ BrepTranslation read_brep(const std::string& path, const std::string& format);
 
 // The child's side, `cadnurbs __read-brep FORMAT PATH`: reads, writes the translation stream to fd 3 and
 // stage lines ("stage parse", ..., "error MESSAGE", "memory") to fd 4. Exit status 0 when read, 1 when
-// refused. A test hook: CADNURBS_WALL_FAULT=STAGE:segv|sleep|alloc makes the child crash, sleep for
-// ever or allocate without end when STAGE ("parse", "transfer", "face 1", ...) starts.
+// refused. A test hook: CADNURBS_WALL_FAULT=STAGE:segv|xcpu|sleep|alloc makes the child crash, receive
+// the kernel's CPU-limit signal, sleep for ever or allocate without end when STAGE ("parse", "transfer",
+// "face 1", ...) starts; CADNURBS_WALL_EXEC=1 makes a single-threaded process exec its child too.
 int run_read_brep_child(const std::vector<std::string>& args);
 
 }  // namespace cadnurbs

@@ -14,6 +14,7 @@ debian_packages=(
   libcgal-dev libopenmesh-dev libdraco-dev libmeshoptimizer-dev libtinygltf-dev nlohmann-json3-dev libtbb-dev
   view3dscene xvfb xauth chromium fonts-dejavu-core
   clang libclang-rt-14-dev
+  python3
 )
 
 # node/npm may come from elsewhere than Debian; the packages only when the commands are missing.

@@ -49,14 +49,17 @@ const BrepSceneBuilder::Converted& BrepSceneBuilder::convert(const TopoDS_Face& 
   }
   if (!result.fallback_reason.empty()) {
     TriangleMesh mesh;
+    std::string meshing_problem;
     try {
       OCC_CATCH_SIGNALS
       mesh = face_mesh(face, deflection_);
+      if (mesh.triangles.empty()) meshing_problem = "meshing gave no triangles";
     } catch (const Standard_Failure& failure) {
-      result.fallback_reason += "; meshing failed too: " + occt_failure_text(failure);
+      meshing_problem = "meshing failed too: " + occt_failure_text(failure);
+    } catch (const std::domain_error& refused) {
+      meshing_problem = refused.what();
     }
-    if (mesh.triangles.empty() && result.fallback_reason.find("meshing failed") == std::string::npos)
-      result.fallback_reason += "; meshing gave no triangles";
+    if (!meshing_problem.empty()) result.fallback_reason += "; " + meshing_problem;
     result.geometry = std::move(mesh);
   }
   converted_index_.Bind(face, converted_.size());

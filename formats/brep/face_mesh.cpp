@@ -4,10 +4,15 @@
 #include <BRep_Tool.hxx>
 #include <GeomLProp_SLProps.hxx>
 #include <Poly_Triangulation.hxx>
+#include <stdexcept>
+
+#include "formats/brep/face_mesh_guard.hpp"
 
 namespace cadnurbs {
 
 TriangleMesh face_mesh(const TopoDS_Face& face, double deflection) {
+  if (const std::string problem = why_not_meshable(face); !problem.empty())
+    throw std::domain_error("not meshed either: " + problem);
   BRepMesh_IncrementalMesh mesher(face, deflection, /*isRelative=*/false, /*theAngDeflection=*/0.5);
   TopLoc_Location location;
   const Handle(Poly_Triangulation) triangulation = BRep_Tool::Triangulation(face, location);

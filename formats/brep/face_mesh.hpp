@@ -10,6 +10,8 @@ namespace cadnurbs {
 // triangulation of it (BRepMesh_IncrementalMesh; an existing finer one is reused), triangles
 // counter-clockwise seen from outside the material, per-corner normals from the surface (the facet normal
 // where the surface has none). Empty when OCCT cannot mesh the face.
+// Refuses (std::domain_error, "not meshed either: <reason>") a face that why_not_meshable
+// (face_mesh_guard.hpp) turns away, on which BRepMesh could loop without end.
 TriangleMesh face_mesh(const TopoDS_Face& face, double deflection);
 
 }  // namespace cadnurbs

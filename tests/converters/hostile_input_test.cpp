@@ -23,15 +23,20 @@ class HostileInput : public CommandTest {
     const CommandResult r = run(command);
     EXPECT_EQ(r.status, 1) << command;
     EXPECT_EQ(r.err, error) << command;
-    if (!output.empty()) EXPECT_FALSE(exists(output)) << command;
+    if (!output.empty()) {
+      EXPECT_FALSE(exists(output)) << command;
+    }
   }
 };
 
-// An ASCII STL of one triangle with `corner` as its first vertex.
-std::string stl_triangle(const std::string& corner) {
-  return "solid t\n facet normal 0 0 1\n  outer loop\n   vertex " + corner +
-         "\n   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\nendsolid t\n";
+// An ASCII STL of the triangle a, b, c.
+std::string stl_triangle(const std::string& a, const std::string& b, const std::string& c) {
+  return "solid t\n facet normal 0 0 1\n  outer loop\n   vertex " + a + "\n   vertex " + b + "\n   vertex " + c +
+         "\n  endloop\n endfacet\nendsolid t\n";
 }
+
+// An ASCII STL of one triangle with `corner` as its first vertex.
+std::string stl_triangle(const std::string& corner) { return stl_triangle(corner, "1 0 0", "0 1 0"); }
 
 // An X3D classic file of one triangle whose first point is `corner`.
 std::string x3dv_triangle(const std::string& corner) {
@@ -94,7 +99,7 @@ TEST_F(HostileInput, CoordinatesTooLargeToMeasureAreRefusedNamingTheInput) {
                                "squared lengths overflow beyond 1e+150): scale it down\n";
   write("huge.stl", stl_triangle("1e308 -1e308 0"));
   write("huge.x3dv", x3dv_triangle("-1e308 1e308 0"));
-  for (const std::string in : {path("huge.stl"), path("huge.x3dv")}) {
+  for (const std::string& in : {path("huge.stl"), path("huge.x3dv")}) {
     for (const std::string options : {"", " --mesh"})
       expect_refused("convert " + in + options + " -o " + path("out.x3dv"), "cadnurbs convert: " + in + expected, "out.x3dv");
     expect_refused("info " + in, "cadnurbs info: " + in + expected);
@@ -102,6 +107,26 @@ TEST_F(HostileInput, CoordinatesTooLargeToMeasureAreRefusedNamingTheInput) {
     EXPECT_EQ(report.status, 3);
     EXPECT_EQ(report.err, "cadnurbs report: " + in + expected + "cadnurbs report: 1 of 1 inputs failed\n");
   }
+  // normals and fit-loop derive their weld tolerance from the same size (before: "weld_vertices:
+  // tolerance must be finite and >= 0, got inf", naming no file).
+  const std::string stl = path("huge.stl");
+  expect_refused("normals " + stl + " -o " + path("n.wrl"), "cadnurbs normals: " + stl + expected, "n.wrl");
+  expect_refused("fit-loop " + stl + " -o " + path("c.obj"), "cadnurbs fit-loop: " + stl + expected, "c.obj");
+}
+
+TEST_F(HostileInput, AMeshWhoseTrianglesAllCollapseIsRefusedByNormalsAndFitLoop) {
+  // Before: normals wrote a file of 0 triangles; fit-loop said "decimate_control_mesh: the mesh has no
+  // triangles", naming no file.
+  write("point.stl", stl_triangle("1 1 0", "1 1 0", "1 1 0"));
+  const std::string point = path("point.stl");
+  const std::string coincide = ": all points coincide: every triangle is degenerate\n";
+  expect_refused("normals " + point + " -o " + path("n.wrl"), "cadnurbs normals: " + point + coincide, "n.wrl");
+  expect_refused("fit-loop " + point + " -o " + path("c.obj"), "cadnurbs fit-loop: " + point + coincide, "c.obj");
+  // Distinct points, but closer than the weld tolerance given.
+  write("tiny.stl", stl_triangle("0 0 0", "0.001 0 0", "0 0.001 0"));
+  const std::string tiny = path("tiny.stl");
+  expect_refused("normals " + tiny + " --weld 0.01 -o " + path("n.wrl"),
+                 "cadnurbs normals: " + tiny + ": every triangle collapses when welded at 0.01\n", "n.wrl");
 }
 
 TEST_F(HostileInput, APartWhosePointsCoincideAsksForADeviation) {

@@ -57,6 +57,15 @@ TEST_F(WalledRead, HangIsStoppedAtTheTimeLimit) {
   EXPECT_TRUE(r.err == head + "parsing\n" || r.err == head + "starting\n") << r.err;
 }
 
+TEST_F(WalledRead, CpuLimitIsNamed) {
+  // The kernel's SIGXCPU at RLIMIT_CPU (raised by the hook: a busy child reaches the wall-time limit
+  // first, whose message the test above checks).
+  const CommandResult r = run("info --time-limit 2.5 " + kCorpusStep, "CADNURBS_WALL_FAULT=transfer:xcpu ");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "cadnurbs info: " + kCorpusStep + ": exceeded 2.5 s of CPU time while transferring\n");
+  EXPECT_EQ(r.out, "");
+}
+
 TEST_F(WalledRead, AllocationIsStoppedAtTheMemoryLimit) {
   const CommandResult r = run("info --memory-limit 256 " + kCorpusStep, "CADNURBS_WALL_FAULT='face 2:alloc' ");
   EXPECT_EQ(r.status, 1);
@@ -83,14 +92,19 @@ TEST_F(WalledRead, LimitsMustBePositive) {
 
 TEST_F(WalledRead, WalledConversionWritesTheInProcessBytes) {
   // This test process does not serve __read-brep, so run_convert here reads in-process.
+  // cadnurbs convert runs one thread when it reads, so its child is a plain fork; CADNURBS_WALL_EXEC=1
+  // makes it exec itself, as a process with threads must.
   for (const std::string& input : {kCorpusStep, kCorpusIges}) {
-    const std::string walled = path("walled.x3dv"), in_process = path("in_process.x3dv");
-    const CommandResult r = run("convert " + input + " -o " + walled);
+    const std::string forked = path("forked.x3dv"), execed = path("execed.x3dv"), in_process = path("in_process.x3dv");
+    const CommandResult r = run("convert " + input + " -o " + forked);
     ASSERT_EQ(r.status, 0) << r.err;
+    const CommandResult e = run("convert " + input + " -o " + execed, "CADNURBS_WALL_EXEC=1 ");
+    ASSERT_EQ(e.status, 0) << e.err;
     ASSERT_EQ(run_convert({input, "-o", in_process}), 0);
     const std::string expected = read_file(in_process);
     EXPECT_GT(expected.size(), 500u);
-    EXPECT_TRUE(read_file(walled) == expected) << input;
+    EXPECT_TRUE(read_file(forked) == expected) << input;
+    EXPECT_TRUE(read_file(execed) == expected) << input;
   }
 }
 

@@ -1,10 +1,7 @@
 // libFuzzer target over the .3dm reader: any byte string goes to parse_3dm, which must either return or
 // throw ArchiveError / FileError (what it promises for a bad file). Anything else (a crash, a sanitizer
-// report, another exception, an input slower than -timeout, memory past -rss_limit_mb / -malloc_limit_mb)
-// is a finding.
-//
-// Built with clang++ -fsanitize=fuzzer,address,undefined by tests/3dm/fuzz/CMakeLists.txt and run for a
-// bounded time by tests/3dm/fuzz/run_fuzz.sh (ctest: 3dm.fuzz).
+// report, another exception, a slow input, memory past the runner's limits) is a finding.
+// Run by tests/fuzz/run_fuzz.sh (ctest: fuzz.3dm).
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

@@ -1,0 +1,16 @@
+# cmake -DCADNURBS=... -DSAMPLES=... -DCORPUS=... -DOUTPUT=... -P write_cnb_seeds.cmake: the .cnb fuzz
+# target's seeds, written by the given cadnurbs into OUTPUT (emptied first): every sample STEP file
+# (trimmed NURBS), every sample STL (meshes), and the corpus's NURBS VRML/X3D files that cadnurbs reads
+# (weights, several surfaces). Fails if one cannot be written.
+file(REMOVE_RECURSE ${OUTPUT})
+file(MAKE_DIRECTORY ${OUTPUT})
+file(GLOB inputs ${SAMPLES}/*.step ${SAMPLES}/*.stl)
+list(APPEND inputs ${CORPUS}/vrml/nurbs_weights.x3dv ${CORPUS}/vrml/nurbs_dune_primitives.x3dv
+     ${CORPUS}/vrml/NurbsTrimmedSurface.x3d)
+foreach(input IN LISTS inputs)
+  get_filename_component(name ${input} NAME)
+  execute_process(COMMAND ${CADNURBS} convert ${input} -o ${OUTPUT}/${name}.cnb RESULT_VARIABLE status OUTPUT_QUIET)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "write_cnb_seeds: cadnurbs convert ${input} failed (${status})")
+  endif()
+endforeach()
