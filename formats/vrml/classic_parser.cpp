@@ -8,6 +8,7 @@
 #include "formats/common/file_io.hpp"
 #include "formats/vrml/parse_error.hpp"
 #include "formats/vrml/classic_tokenizer.hpp"
+#include "formats/vrml/field_integer.hpp"
 #include "formats/vrml/node_schema.hpp"
 
 namespace cadnurbs {
@@ -194,9 +195,9 @@ class ClassicParser {
 
   int integer(const ClassicToken& field) {
     const int line = peek().line;
-    const double value = number(field);
-    if (value != static_cast<double>(static_cast<int>(value))) fail(line, "field " + field.text + ": expected an integer");
-    return static_cast<int>(value);
+    const std::optional<int> value = field_integer(number(field));
+    if (!value) fail(line, "field " + field.text + ": expected an integer");
+    return *value;
   }
 
   // Numbers of an MF field: "[ ... ]" or a single value of `arity` numbers.
@@ -245,8 +246,9 @@ class ClassicParser {
       case FieldType::MFInt32: {
         MFInt32 out;
         for (double v : numbers(field, 1)) {
-          if (v != static_cast<double>(static_cast<int>(v))) fail(field.line, "field " + field.text + ": expected integers");
-          out.values.push_back(static_cast<int>(v));
+          const std::optional<int> value = field_integer(v);
+          if (!value) fail(field.line, "field " + field.text + ": expected integers");
+          out.values.push_back(*value);
         }
         return out;
       }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "formats/vrml/field_integer.hpp"
 #include "formats/vrml/node_schema.hpp"
 #include "formats/vrml/parse_error.hpp"
 #include "formats/vrml/xml_markup.hpp"
@@ -119,8 +120,9 @@ class X3dBuilder {
   }
 
   int integer(const XmlAttribute& a, double v) const {
-    if (v != static_cast<double>(static_cast<int>(v))) fail("field " + a.name + ": expected integers", a.line);
-    return static_cast<int>(v);
+    const std::optional<int> value = field_integer(v);
+    if (!value) fail("field " + a.name + ": expected integers", a.line);
+    return *value;
   }
 
   MFString strings(const XmlAttribute& a) const {

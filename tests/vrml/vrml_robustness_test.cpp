@@ -76,5 +76,30 @@ TEST(VrmlRobustness, SelfReferenceDepthAndExpansionAreRefused) {
   EXPECT_THROW(parse_vrml(header + "Transform { translation -inf 0 0 }\n", "t"), FileError);
 }
 
+// Returns the FileError message of parse_vrml(text), or "" when it reads.
+std::string refusal(const std::string& text) {
+  try {
+    parse_vrml(text, "t");
+  } catch (const FileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(VrmlRobustness, IntegersBeyondInt32AreRefusedNotCast) {
+  // Found by fuzz_x3d_xml (UBSan): 5.6e34 was cast to int before it was checked.
+  const std::string header = "#X3D V3.3 utf8\nPROFILE Immersive\n";
+  const std::string points = "controlPoint Coordinate { point [0 0 0, 1 0 0, 0 1 0, 1 1 0] } } }\n";
+  EXPECT_EQ(refusal(header + "Shape { geometry NurbsPatchSurface { uOrder 5.6e34 vOrder 2 uDimension 2 vDimension 2 " + points),
+            "t: line 3: field uOrder: expected an integer");
+  EXPECT_EQ(refusal(header + "Shape { geometry IndexedFaceSet { coordIndex [0 1 2147483648 -1] }}\n"),
+            "t: line 3: field coordIndex: expected integers");
+  EXPECT_EQ(refusal("<X3D><Scene><Shape><NurbsPatchSurface uOrder='5.6e34'/></Shape></Scene></X3D>"),
+            "t: line 1: field uOrder: expected integers");
+  // The largest int32 is still one.
+  EXPECT_EQ(refusal(header + "Shape { geometry IndexedFaceSet { coordIndex [0 1 2147483647 -1] }}\n").find("expected"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace cadnurbs
