@@ -93,6 +93,9 @@ std::vector<Eigen::Vector3d> read_double_vertices(ArchiveReader& reader, std::si
         refuse(reader, "double-precision vertex count " + std::to_string(count) + " is not the vertex count " +
                            std::to_string(vertex_count));
       const std::string bytes = read_compressed_buffer(reader, std::size_t{count} * 24, "ON_Mesh double vertex buffer");
+      // An absent buffer (declared size 0) with a count that is not: found by fuzz_3dm (read past the end).
+      if (bytes.size() != std::size_t{count} * 24)
+        refuse(reader, "double-precision vertex buffer missing for " + std::to_string(count) + " vertices");
       points.resize(count);
       for (std::size_t i = 0; i < count; ++i) {
         double xyz[3];

@@ -198,6 +198,31 @@ TEST(MeshObject, RefusesBadIndicesAndImpossibleBufferSizes) {
   EXPECT_EQ(error_of(ratio.s), "m.3dm: chunk 0x40008000 at offset " + std::to_string(ratio.s.size() - 22) +
                                    ": ON_Mesh vertex buffer: 10 compressed bytes cannot inflate to 1200000");
 
+  // Version 3.7 with the double-precision vertices present but their buffer absent (declared size 0)
+  // while the count says 1: the reader copied 24 bytes out of an empty buffer (found by fuzz_3dm).
+  const auto crc = [](const std::string& x) {
+    return static_cast<std::uint32_t>(::crc32(0, reinterpret_cast<const Bytef*>(x.data()), static_cast<uInt>(x.size())));
+  };
+  MeshBytes doubles(0x37, 1, 0);
+  doubles.put(std::int32_t{0});                                                 // no faces: no index size
+  doubles.put(std::uint32_t{12}).put(crc(std::string(12, '\0'))).put(std::uint8_t{0});
+  doubles.s.append(12, '\0');                                                   // one float vertex, stored
+  for (int k = 0; k < 4; ++k) doubles.put(std::uint32_t{0});                    // normals, textures, curvatures, colours
+  doubles.put(std::int32_t{0}).s.append(16, '\0');                              // packed rotation, mapping id
+  doubles.put(std::uint32_t{0});                                                // surface parameters
+  doubles.put(tcode::kAnonymousChunk).put(std::uint32_t{4}).put(std::uint32_t{0});  // mapping tag: empty, CRC 0
+  doubles.s.append(3, '\0');                                                    // manifold, oriented, solid
+  doubles.put(std::uint8_t{0}).put(std::uint8_t{1});                            // no n-gons; double vertices
+  MeshBytes body(0, 0, 0);
+  body.s.clear();
+  body.put(std::int32_t{1}).put(std::int32_t{0}).put(std::uint32_t{1}).put(std::uint32_t{0});
+  doubles.put(tcode::kAnonymousChunk).put(static_cast<std::uint32_t>(body.s.size() + 4));
+  doubles.s += body.s;
+  doubles.put(crc(body.s));
+  const std::string missing = error_of(doubles.s);
+  EXPECT_EQ(missing.rfind("m.3dm: ", 0), 0u) << missing;
+  EXPECT_NE(missing.find("ON_Mesh: double-precision vertex buffer missing for 1 vertices"), std::string::npos) << missing;
+
   MeshBytes version(0x20, 0, 0);
   EXPECT_EQ(error_of(version.s), "m.3dm: offset 1: ON_Mesh: chunk version 2.0 is not 1.x or 3.x");
 }
