@@ -13,5 +13,6 @@ int run_demo(const std::vector<std::string>& args);
 int run_report(const std::vector<std::string>& args);
 int run_normals(const std::vector<std::string>& args);
 int run_fit_loop(const std::vector<std::string>& args);
+int run_batch(const std::vector<std::string>& args);
 
 }  // namespace cadnurbs

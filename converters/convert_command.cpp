@@ -23,6 +23,7 @@ std::string help() {
          "written once (DEF/USE), straight trimming runs as polylines, planar faces bounded by straight\n"
          "edges as exact polygons, knots as small numbers where an affine map allows; nothing moves by\n"
          "more than the written precision. gzip'd forms: .wrz .wrl.gz .x3dvz .x3dz (read too).\n"
+         "  --from EXT          read IN as the format of extension EXT (step, stl, ...) whatever its name\n"
          "  --mesh              write triangles: every NURBS surface tessellated so that no point of\n"
          "                      the mesh is farther than the deviation from the exact surface\n"
          "                      (formats that hold triangles only imply it)\n"
@@ -87,7 +88,7 @@ int drop_curves(SceneNode& node) {
 
 int run_convert(const std::vector<std::string>& args) {
   const Arguments a = parse_arguments("convert", args, {"output", "steps", "precision", "deviation", "display-deviation", "units", "compress",
-                                       "time-limit", "memory-limit"},
+                                       "time-limit", "memory-limit", "from"},
                                       {"mesh", "euclidean", "self-contained", "exact-nurbs", "pretty", "check-areas", "help"});
   if (a.has("help")) {
     std::cout << help();
@@ -112,11 +113,11 @@ int run_convert(const std::vector<std::string>& args) {
     if (!unit) throw UsageError("--units: unknown unit '" + a.value("units") + "' (mm, cm, m, in, kicad)");
   }
   const FileFormat& format = output_format(out);  // refuse an unknown output before the work
-  input_format(in);
+  const FileFormat& in_format = a.has("from") ? named_input_format(a.value("from")) : input_format(in);
 
   const bool homogeneous = !a.has("euclidean");
   apply_read_limits(a);
-  const BrepTranslation loaded = load_scene(in, homogeneous);
+  const BrepTranslation loaded = load_scene_as(in, in_format, homogeneous);
   for (const auto& line : loaded.repairs) std::cerr << in << ": " << line << "\n";
   for (const auto& f : loaded.fallbacks)
     std::cerr << in << ": " << f.node << " face " << f.face_index << " (" << f.surface_type

@@ -228,6 +228,14 @@ const FileFormat& input_format(const std::string& path) {
   return *format;
 }
 
+const FileFormat& named_input_format(const std::string& name) {
+  const std::string extension = name.empty() || name.front() == '.' ? name : "." + name;
+  const FileFormat* format = format_of("x" + extension);
+  if (extension.size() < 2 || !format || !format->read)
+    throw FileError("unknown input format '" + name + "' (expected " + extension_list(true) + ")");
+  return *format;
+}
+
 const FileFormat& output_format(const std::string& path) {
   const FileFormat* format = format_of(path);
   if (!format || !format->write)
@@ -238,7 +246,12 @@ const FileFormat& output_format(const std::string& path) {
 
 BrepTranslation load_scene(const std::string& path, bool homogeneous_control_points) {
   regular_file_size(path);  // a directory, device or FIFO is refused by type, whatever reads the format
-  BrepTranslation loaded = input_format(path).read(path, homogeneous_control_points);
+  return load_scene_as(path, input_format(path), homogeneous_control_points);
+}
+
+BrepTranslation load_scene_as(const std::string& path, const FileFormat& format, bool homogeneous_control_points) {
+  regular_file_size(path);
+  BrepTranslation loaded = format.read(path, homogeneous_control_points);
   // The one check of trimming loops before any writer or tessellation. STEP/IGES faces (face_count > 0)
   // passed it already, face by face, where a refused face can still be meshed by OCCT.
   if (loaded.face_count == 0) {

@@ -52,12 +52,19 @@ const FileFormat* format_of(const std::string& path);
 const FileFormat& input_format(const std::string& path);
 const FileFormat& output_format(const std::string& path);
 
+// The input format of extension `name` ("step", ".step", "STL"), for --from. Throws FileError
+// "unknown input format 'x' (expected ...)" when no input format has it.
+const FileFormat& named_input_format(const std::string& name);
+
 // "a, b, c" of every extension that is read (inputs) or written (outputs).
 std::string extension_list(bool inputs);
 
 // input_format(path).read: the scene and, from STEP/IGES, the faces that fell back to meshes. Throws
 // FileError/GeometryError with a one-line message.
 BrepTranslation load_scene(const std::string& path, bool homogeneous_control_points = true);
+
+// load_scene with the format given rather than taken from the name (content_format.hpp tells it).
+BrepTranslation load_scene_as(const std::string& path, const FileFormat& format, bool homogeneous_control_points = true);
 
 // load_scene(...).scene.
 Scene read_scene(const std::string& path, bool homogeneous_control_points = true);

@@ -18,6 +18,8 @@ const char* kUsage =
     "  report  IN... [--deviation D] [--format md|json|csv|html] [-o FILE] [--files DIR] [--records DIR] [--curve]\n"
     "  normals IN.stl -o OUT [--crease-angle DEG] [--weld TOL]\n"
     "  fit-loop IN.stl -o CONTROL.obj [--surface LIMIT] [--control-vertices N] [--tolerance D] [--crease-angle DEG]\n"
+    "  batch   IN_DIR -o OUT_DIR [--jobs N] [--to EXT,...] [--deviation D] [--timeout S] [--memory MB] [--shard K/N]\n"
+    "  batch   --merge OUT_DIR\n"
     "  demo    [-o DIR]\n"
     "'cadnurbs COMMAND --help' tells more.\n";
 
@@ -26,7 +28,7 @@ const char* kUsage =
 int main(int argc, char** argv) {
   using namespace cadnurbs;
   const std::map<std::string, int (*)(const std::vector<std::string>&)> commands = {
-      {"convert", run_convert}, {"info", run_info}, {"capping", run_capping}, {"demo", run_demo}, {"report", run_report}, {"normals", run_normals}, {"fit-loop", run_fit_loop}};
+      {"convert", run_convert}, {"info", run_info}, {"capping", run_capping}, {"demo", run_demo}, {"report", run_report}, {"normals", run_normals}, {"fit-loop", run_fit_loop}, {"batch", run_batch}};
   if (argc < 2) {
     std::cerr << kUsage;
     return 2;

@@ -328,7 +328,7 @@ void measure_mesh_input(PartRecord& record, const Scene& scene, const Folder& fo
 PartRecord measure(const std::string& input, const PartMeasurementOptions& options, PartViews* views) {
   PartRecord record;
   record.input = input;
-  const BrepTranslation loaded = load_scene(input);
+  const BrepTranslation loaded = options.format ? load_scene_as(input, *options.format) : load_scene(input);
   for (const auto& line : loaded.repairs) record.warnings.push_back(line);
   for (const auto& f : loaded.fallbacks)
     record.warnings.push_back(f.node + " face " + std::to_string(f.face_index) + " (" + f.surface_type +

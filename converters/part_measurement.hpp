@@ -6,6 +6,7 @@
 
 #include "analysis/report/report_html.hpp"
 #include "analysis/report/storage_record.hpp"
+#include "converters/file_formats.hpp"
 
 namespace cadnurbs {
 
@@ -15,6 +16,7 @@ struct PartMeasurementOptions {
   // temporary folder, removed afterwards.
   std::string files_folder;
   bool curve = false;         // also the storage-against-deviation curve (analysis of several D)
+  const FileFormat* format = nullptr;  // the input's format when its name does not say it (batch tells it by content)
 };
 
 // The record of `input`. Never throws for a bad input: a file that cannot be read or measured gives a

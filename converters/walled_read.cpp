@@ -3,7 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <sys/resource.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -19,6 +19,7 @@
 #include <new>
 #include <thread>
 
+#include "converters/process_limits.hpp"
 #include "formats/brep/read_stage.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/iges/iges_reader.hpp"
@@ -99,18 +100,13 @@ bool single_threaded() {
 // /dev/null (OCCT prints; the parent speaks for the child), the CPU, address-space and core limits.
 void prepare_child(int stream_fd, int stage_fd, const ReadLimits& limits) {
   ::setpgid(0, 0);
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // its own process group: a killed parent's group kill misses it
   // Fds 3 and 4 may be the pipes themselves: move them out of the way first.
   const int stream = ::fcntl(stream_fd, F_DUPFD, 10), stage = ::fcntl(stage_fd, F_DUPFD, 10);
   if (stream < 0 || stage < 0 || ::dup2(stream, kStreamFd) < 0 || ::dup2(stage, kStageFd) < 0) _exit(126);
   const int null = ::open("/dev/null", O_RDWR);
   if (null < 0 || ::dup2(null, 0) < 0 || ::dup2(null, 1) < 0 || ::dup2(null, 2) < 0) _exit(126);
-  const rlim_t cpu = static_cast<rlim_t>(std::ceil(limits.seconds));
-  const rlimit cpu_limit{cpu, cpu + 1};  // SIGXCPU at the limit, SIGKILL a second later
-  const rlim_t bytes = static_cast<rlim_t>(limits.megabytes) << 20;
-  const rlimit memory_limit{bytes, bytes}, no_core{0, 0};
-  ::setrlimit(RLIMIT_CPU, &cpu_limit);
-  ::setrlimit(RLIMIT_AS, &memory_limit);
-  ::setrlimit(RLIMIT_CORE, &no_core);
+  limit_this_process(limits.seconds, limits.megabytes);
 }
 
 // The child's outcome as the one-line error, or empty when it read the file.

@@ -1,0 +1,227 @@
+#include "converters/batch/convert_library.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include "analysis/report/report_formats.hpp"
+#include "converters/batch/batch_record.hpp"
+#include "converters/batch/library_listing.hpp"
+#include "converters/batch/worker_pool.hpp"
+#include "converters/commands.hpp"
+#include "converters/part_measurement.hpp"
+#include "converters/walled_read.hpp"
+#include "formats/common/file_io.hpp"
+
+namespace cadnurbs {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string record_path(const fs::path& stem) { return stem.string() + ".json"; }
+
+PartRecord failed_record(const std::string& part, const std::string& error) {
+  PartRecord record;
+  record.input = part;
+  record.failed = true;
+  record.error = error;
+  return record;
+}
+
+// A reader's or writer's message without the "<input>: " it starts with: a record names its part already.
+std::string reason_of(std::string message, const std::string& input) {
+  if (message.starts_with(input + ": ")) message.erase(0, input.size() + 2);
+  return message;
+}
+
+// The part's outputs, removed when the part fails: a failed part leaves its record only.
+void remove_outputs(const BatchOptions& options, const fs::path& stem) {
+  std::error_code ignored;
+  for (const auto& target : options.targets) fs::remove(stem.string() + "." + target, ignored);
+}
+
+// The worker's work for one part: the report's record, then each output, then the record on disk.
+int run_part(const BatchOptions& options, const LibraryPart& part, const fs::path& stem) {
+  const auto start = Clock::now();
+  const std::string input = (fs::path(options.in_dir) / part.relative).string();
+  // The STEP/IGES wall inside the worker stops a little before the worker is killed, naming the stage.
+  read_limits() = {0.9 * options.seconds, options.megabytes};
+  PartMeasurementOptions measurement;
+  measurement.deviation_mm = options.deviation_mm;
+  if (part.by_content) measurement.format = part.format;
+  PartRecord record = measure_part(input, measurement);
+  fs::create_directories(stem.parent_path());
+  for (const auto& target : options.targets) {
+    if (record.failed) break;
+    std::vector<std::string> args{input, "-o", stem.string() + "." + target};
+    if (part.by_content) args.insert(args.end(), {"--from", part.format->extensions.front()});
+    try {
+      if (run_convert(args) != 0) record = failed_record(part.relative, "convert to ." + target + " failed");
+    } catch (const std::exception& error) {
+      record = failed_record(part.relative, reason_of(error.what(), input));
+    }
+  }
+  if (record.failed) remove_outputs(options, stem);
+  record.input = part.relative;
+  const BatchFields fields{part.relative, content_hash(input), options_key(options),
+                           std::chrono::duration<double>(Clock::now() - start).count()};
+  write_file_atomically(record_path(stem), batch_record_json(record, fields));
+  return 0;
+}
+
+// The record a worker that ended badly leaves: the reason, on disk like any other.
+PartRecord record_failure(const BatchOptions& options, const LibraryPart& part, const fs::path& stem,
+                          const std::string& reason, double seconds) {
+  const std::string input = (fs::path(options.in_dir) / part.relative).string();
+  PartRecord record = failed_record(part.relative, reason);
+  remove_outputs(options, stem);
+  std::string hash;
+  try {
+    hash = content_hash(input);
+  } catch (const FileError&) {
+  }
+  fs::create_directories(stem.parent_path());
+  write_file_atomically(record_path(stem), batch_record_json(record, {part.relative, hash, options_key(options), seconds}));
+  return record;
+}
+
+void write_reports(const fs::path& out_dir, const std::string& name, const std::vector<PartRecord>& records) {
+  write_file_atomically((out_dir / (name + ".md")).string(), report_markdown(records));
+  write_file_atomically((out_dir / (name + ".json")).string(), report_json(records));
+  write_file_atomically((out_dir / (name + ".csv")).string(), report_csv(records));
+}
+
+std::string seconds_text(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f s", s);
+  return text;
+}
+
+}  // namespace
+
+std::string options_key(const BatchOptions& options) {
+  std::ostringstream key;
+  key << "to=";
+  for (size_t i = 0; i < options.targets.size(); ++i) key << (i ? "," : "") << options.targets[i];
+  key << ";deviation_mm=" << options.deviation_mm;
+  return key.str();
+}
+
+BatchSummary convert_library(const BatchOptions& options) {
+  const std::vector<LibraryPart> parts = shard_of(list_library(options.in_dir), options.shard, options.shards);
+  std::error_code error;
+  fs::create_directories(options.out_dir, error);
+  if (error || !fs::is_directory(options.out_dir)) throw FileError(options.out_dir + ": cannot be made a folder");
+  const std::string key = options_key(options);
+  BatchSummary summary;
+  summary.parts = static_cast<int>(parts.size());
+  std::vector<std::optional<PartRecord>> results(parts.size());
+  std::vector<fs::path> stems(parts.size());
+  std::vector<size_t> todo;
+  int finished = 0, failed = 0;
+  const auto started = Clock::now();
+  // On a terminal: one line redrawn in place (count, failures, rate, ETA), failures kept above it. Else
+  // one log line per part.
+  auto log = [&](size_t i, const PartRecord& record, const std::string& how) {
+    ++finished;
+    failed += record.failed ? 1 : 0;
+    const std::string line = "batch: [" + std::to_string(finished) + "/" + std::to_string(parts.size()) + "] " +
+                             parts[i].relative + ": " + (record.failed ? "failed: " + record.error : how);
+    if (!options.progress_bar) {
+      std::cerr << line << "\n";
+      return;
+    }
+    const double minutes = std::chrono::duration<double>(Clock::now() - started).count() / 60;
+    const double rate = minutes > 0 ? finished / minutes : 0;
+    const int left = static_cast<int>(parts.size()) - finished;
+    const int eta = rate > 0 ? static_cast<int>(60 * left / rate) : 0;
+    const int width = 30, filled = static_cast<int>(width * finished / std::max<size_t>(1, parts.size()));
+    char status[160];
+    std::snprintf(status, sizeof status, "\r[%s%s] %d/%zu parts, %d failed, %.1f parts/min, ETA %d:%02d:%02d ",
+                  std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(), finished, parts.size(),
+                  failed, rate, eta / 3600, eta / 60 % 60, eta % 60);
+    if (record.failed) std::cerr << "\r\033[K" << line << "\n";
+    std::cerr << status << (finished == static_cast<int>(parts.size()) ? "\n" : "") << std::flush;
+  };
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const LibraryPart& part = parts[i];
+    try {
+      stems[i] = output_stem(options.out_dir, part.relative);
+    } catch (const std::invalid_argument& refused) {
+      results[i] = failed_record(part.relative, std::string("refused: ") + refused.what());
+      log(i, *results[i], "");
+      continue;
+    }
+    if (!part.refusal.empty()) {
+      results[i] = record_failure(options, part, stems[i], "refused: it " + part.refusal, 0);
+      log(i, *results[i], "");
+      continue;
+    }
+    const std::string input = (fs::path(options.in_dir) / part.relative).string();
+    if (const auto done = read_batch_record(record_path(stems[i]))) {
+      std::string hash;
+      try {
+        hash = content_hash(input);
+      } catch (const FileError&) {
+      }
+      if (done->fields.options == key && done->fields.input_hash == hash && done->fields.part == part.relative) {
+        results[i] = done->record;
+        ++summary.reused;
+        log(i, *results[i], "done before");
+        continue;
+      }
+    }
+    todo.push_back(i);
+  }
+  const WorkerLimits limits{options.seconds, options.megabytes};
+  run_in_workers(
+      static_cast<int>(todo.size()), options.jobs, limits,
+      [&](int k) { return run_part(options, parts[todo[k]], stems[todo[k]]); },
+      [&](int k, const WorkerOutcome& outcome) {
+        const size_t i = todo[k];
+        std::string reason = outcome.reason(limits);
+        std::optional<BatchRecord> written;
+        if (reason.empty() && !(written = read_batch_record(record_path(stems[i])))) reason = "the worker left no record";
+        results[i] = reason.empty() ? written->record : record_failure(options, parts[i], stems[i], reason, outcome.seconds);
+        ++summary.converted;
+        log(i, *results[i], "ok, " + seconds_text(outcome.seconds));
+      });
+  std::vector<PartRecord> records;
+  for (auto& result : results) {
+    if (result->failed) ++summary.failed;
+    records.push_back(std::move(*result));
+  }
+  const std::string name = options.shards > 1 ? "report-" + std::to_string(options.shard) + "-of-" + std::to_string(options.shards)
+                                              : "report";
+  write_reports(options.out_dir, name, records);
+  return summary;
+}
+
+BatchSummary merge_batch(const std::string& out_dir) {
+  std::error_code error;
+  if (!fs::is_directory(out_dir, error)) throw FileError(out_dir + ": not a folder");
+  std::vector<BatchRecord> found;
+  for (fs::recursive_directory_iterator walk(out_dir, error), end; !error && walk != end; walk.increment(error))
+    if (walk->is_regular_file() && walk->path().extension() == ".json")
+      if (auto record = read_batch_record(walk->path().string())) found.push_back(std::move(*record));
+  if (error) throw FileError(out_dir + ": cannot be walked (" + error.message() + ")");
+  std::sort(found.begin(), found.end(), [](const BatchRecord& a, const BatchRecord& b) { return a.fields.part < b.fields.part; });
+  BatchSummary summary;
+  std::vector<PartRecord> records;
+  for (auto& r : found) {
+    ++summary.parts;
+    if (r.record.failed) ++summary.failed;
+    records.push_back(std::move(r.record));
+  }
+  write_reports(out_dir, "report", records);
+  return summary;
+}
+
+}  // namespace cadnurbs

@@ -1,0 +1,101 @@
+#include <unistd.h>
+
+#include <iostream>
+#include <thread>
+
+#include "converters/arguments.hpp"
+#include "converters/batch/convert_library.hpp"
+#include "converters/commands.hpp"
+#include "converters/file_formats.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+const char* kHelp =
+    "usage: cadnurbs batch IN_DIR -o OUT_DIR [--jobs N] [--to EXT,...] [--deviation D] [--timeout S]\n"
+    "                      [--memory MB] [--shard K/N]\n"
+    "       cadnurbs batch --merge OUT_DIR\n"
+    "Converts every part under IN_DIR (a file named as an input format, or holding one when its name\n"
+    "says nothing), each in a worker process of its own, N at a time, into OUT_DIR's mirror of IN_DIR:\n"
+    "OUT_DIR/<part>.<ext> for each output and OUT_DIR/<part>.json, the part's record (the report's\n"
+    "schema, docs/report.md, plus a \"batch\" object: content hash, options, seconds). A part that fails,\n"
+    "crashes, hangs or runs out of memory is recorded with its reason and the batch goes on. A second\n"
+    "run skips the parts whose record has the same content hash and options. Ends with the combined\n"
+    "report: OUT_DIR/report.md, report.json, report.csv.\n"
+    "  --jobs N        workers at a time (default: the number of cores)\n"
+    "  --to EXT,...    outputs per part (default x3dv; any output extension of convert)\n"
+    "  --deviation D   the report's maximum mesh deviation D in millimetres (default 1)\n"
+    "  --timeout S     per part, wall and CPU time (default 300)\n"
+    "  --memory MB     per part, address space (default 4096)\n"
+    "  --shard K/N     only the K-th (0 to N-1) of N disjoint slices of the parts (cluster array tasks);\n"
+    "                  its report is OUT_DIR/report-K-of-N.*\n"
+    "  --merge         the combined report of every record under OUT_DIR (all shards')\n"
+    "Exit status 0 when every part converted, 3 when some failed.\n";
+
+constexpr int kSomeFailed = 3;
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  for (size_t start = 0, comma; start <= text.size(); start = comma + 1) {
+    comma = text.find(',', start);
+    if (comma == std::string::npos) comma = text.size();
+    if (comma > start) items.push_back(text.substr(start, comma - start));
+  }
+  return items;
+}
+
+}  // namespace
+
+int run_batch(const std::vector<std::string>& args) {
+  const Arguments a = parse_arguments("batch", args, {"output", "jobs", "to", "deviation", "timeout", "memory", "shard"},
+                                      {"merge", "help"});
+  if (a.has("help")) {
+    std::cout << kHelp;
+    return 0;
+  }
+  if (a.has("merge")) {
+    if (a.positional.size() != 1) throw UsageError("--merge needs the one OUT_DIR of the shards");
+    const BatchSummary s = merge_batch(a.positional[0]);
+    std::cout << a.positional[0] << ": " << s.parts << " parts, " << s.failed << " failed; report.md, report.json, report.csv\n";
+    return s.failed > 0 ? kSomeFailed : 0;
+  }
+  if (a.positional.size() != 1 || !a.has("output")) throw UsageError("needs one IN_DIR and -o OUT_DIR (see --help)");
+  BatchOptions options;
+  options.in_dir = a.positional[0];
+  options.out_dir = a.value("output");
+  options.jobs = a.integer("jobs", static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  if (options.jobs < 1) throw UsageError("--jobs must be at least 1");
+  if (a.has("to")) options.targets = split_list(a.value("to"));
+  if (options.targets.empty()) throw UsageError("--to needs at least one extension");
+  for (auto& target : options.targets) {
+    if (target.front() == '.') target.erase(0, 1);
+    output_format("x." + target);  // refuses an unknown one before any work
+  }
+  options.deviation_mm = a.number("deviation", options.deviation_mm);
+  if (!(options.deviation_mm > 0)) throw UsageError("--deviation must be a positive number of millimetres");
+  options.seconds = a.number("timeout", options.seconds);
+  if (!(options.seconds > 0)) throw UsageError("--timeout must be a positive number of seconds");
+  options.megabytes = a.integer("memory", static_cast<int>(options.megabytes));
+  if (options.megabytes < 64) throw UsageError("--memory must be at least 64 MB");
+  if (a.has("shard")) {
+    const std::string shard = a.value("shard");
+    const size_t slash = shard.find('/');
+    try {
+      if (slash == std::string::npos) throw std::invalid_argument("no slash");
+      options.shard = std::stoi(shard.substr(0, slash));
+      options.shards = std::stoi(shard.substr(slash + 1));
+    } catch (const std::exception&) {
+      throw UsageError("--shard needs K/N, such as 0/4, not '" + shard + "'");
+    }
+    if (options.shards < 1 || options.shard < 0 || options.shard >= options.shards)
+      throw UsageError("--shard K/N needs 0 <= K < N, not '" + shard + "'");
+  }
+  options.progress_bar = ::isatty(2);
+  const BatchSummary s = convert_library(options);
+  std::cout << options.out_dir << ": " << s.parts << " parts: " << s.converted << " converted now, " << s.reused
+            << " done before, " << s.failed << " failed\n";
+  return s.failed > 0 ? kSomeFailed : 0;
+}
+
+}  // namespace cadnurbs

@@ -1,0 +1,161 @@
+// cadnurbs batch (issue 14): the library listing (stable order, parts told by content, links out of the
+// library refused), the shards, the output paths that may not escape OUT_DIR, and the command itself on
+// small folders of real and broken files: every input once in the report, resuming, a killed run, a part
+// that hangs.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "command_fixture.hpp"
+#include "converters/batch/library_listing.hpp"
+
+namespace cadnurbs::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kStep = CADNURBS_SOURCE_DIR "/samples/capping-post.step";
+const std::string kIges = CADNURBS_SOURCE_DIR "/samples/capping-post.iges";
+
+class Batch : public CommandTest {
+ protected:
+  std::string make(const std::string& relative, const std::string& text) const {
+    const fs::path p = fs::path(path(relative));
+    fs::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << text;
+    return p.string();
+  }
+  std::string copy(const std::string& from, const std::string& relative) const { return make(relative, read_file(from)); }
+  nlohmann::json report(const std::string& out) const { return nlohmann::json::parse(read_file(out + "/report.json")); }
+};
+
+std::vector<std::string> names(const std::vector<LibraryPart>& parts) {
+  std::vector<std::string> out;
+  for (const auto& p : parts) out.push_back(p.relative);
+  return out;
+}
+
+TEST_F(Batch, ListingIsStableTellsUnnamedPartsByContentAndRefusesLinksOut) {
+  copy(kStep, "lib/b.step");
+  copy(kIges, "lib/a/c.iges");
+  copy(kStep, "lib/noext");
+  make("lib/README.txt", "not a part\n");
+  make("lib/notes", "not a part either\n");
+  fs::create_symlink("/etc/hostname", path("lib/link.step"));
+  const auto parts = list_library(path("lib"));
+  EXPECT_EQ(names(parts), (std::vector<std::string>{"a/c.iges", "b.step", "link.step", "noext"}));
+  ASSERT_EQ(parts.size(), 4u);
+  EXPECT_FALSE(parts[1].by_content);
+  EXPECT_TRUE(parts[3].by_content);
+  ASSERT_NE(parts[3].format, nullptr);
+  EXPECT_EQ(parts[3].format->extensions.front(), ".step");
+  EXPECT_EQ(parts[2].refusal, "links to /etc/hostname, outside the library");
+  EXPECT_EQ(parts[0].refusal, "");
+}
+
+TEST_F(Batch, ShardsAreDisjointAndCoverTheLibrary) {
+  std::vector<LibraryPart> all(10);
+  for (int i = 0; i < 10; ++i) all[i].relative = "p" + std::to_string(i);
+  std::vector<std::string> seen;
+  std::vector<size_t> sizes;
+  for (int k = 0; k < 4; ++k) {
+    const auto slice = shard_of(all, k, 4);
+    sizes.push_back(slice.size());
+    for (const auto& p : slice) seen.push_back(p.relative);
+  }
+  std::sort(seen.begin(), seen.end());
+  EXPECT_EQ(seen, names(all));
+  EXPECT_EQ(sizes, (std::vector<size_t>{3, 3, 2, 2}));
+  EXPECT_THROW(shard_of(all, 4, 4), std::invalid_argument);
+}
+
+TEST_F(Batch, OutputsMayNotEscapeOutDir) {
+  const std::string out = path("out");
+  fs::create_directories(out);
+  EXPECT_EQ(output_stem(out, "a/b.step"), fs::weakly_canonical(fs::path(out) / "a/b.step"));
+  auto refusal = [&](const std::string& relative) {
+    try {
+      output_stem(out, relative);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refusal("../x.step"), "its name climbs out of the folder ('..')");
+  EXPECT_EQ(refusal("a/../../x.step"), "its name climbs out of the folder ('..')");
+  EXPECT_EQ(refusal("/etc/x.step"), "its name is an absolute path");
+  fs::create_directory_symlink(fs::temp_directory_path(), path("out/evil"));
+  EXPECT_EQ(refusal("evil/x.step").rfind("its output would land outside OUT_DIR, at ", 0), 0u) << refusal("evil/x.step");
+}
+
+TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunReusesEveryRecord) {
+  copy(kStep, "lib/good.step");
+  copy(kIges, "lib/sub/good.iges");
+  make("lib/empty.step", "");
+  make("lib/garbage.iges", std::string("\x00\x01\x02 not IGES at all\n", 22));
+  make("lib/truncated.step", read_file(kStep).substr(0, 5000));
+  copy(kStep, "lib/wrong.stl");  // a STEP file named as STL fails as STL
+  const std::string out = path("out");
+  const CommandResult r = run("batch " + path("lib") + " -o " + out + " --jobs 2");
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_EQ(r.out, out + ": 6 parts: 6 converted now, 0 done before, 4 failed\n");
+  const nlohmann::json j = report(out);
+  ASSERT_EQ(j["parts"].size(), 6u);
+  std::vector<std::string> inputs;
+  for (const auto& part : j["parts"]) inputs.push_back(part["input"]);
+  EXPECT_EQ(inputs, (std::vector<std::string>{"empty.step", "garbage.iges", "good.step", "sub/good.iges",
+                                              "truncated.step", "wrong.stl"}));
+  for (const auto& part : j["parts"]) {
+    const std::string input = part["input"];
+    const bool good = input == "good.step" || input == "sub/good.iges";
+    EXPECT_EQ(part["status"], good ? "ok" : "failed") << input;
+    if (!good) {
+      EXPECT_FALSE(part["error"].get<std::string>().empty()) << input;
+    }
+    EXPECT_EQ(fs::exists(out + "/" + input + ".x3dv"), good) << input;
+    EXPECT_TRUE(fs::exists(out + "/" + input + ".json")) << input;
+  }
+  const std::string first_report = read_file(out + "/report.md");
+  const CommandResult again = run("batch " + path("lib") + " -o " + out + " --jobs 2");
+  EXPECT_EQ(again.status, 3);
+  EXPECT_EQ(again.out, out + ": 6 parts: 0 converted now, 6 done before, 4 failed\n");
+  EXPECT_EQ(read_file(out + "/report.md"), first_report);
+  // A changed input is done again; the others are not.
+  make("lib/empty.step", read_file(kStep));
+  const CommandResult changed = run("batch " + path("lib") + " -o " + out + " --jobs 2");
+  EXPECT_EQ(changed.out, out + ": 6 parts: 1 converted now, 5 done before, 3 failed\n");
+}
+
+TEST_F(Batch, AKilledBatchLosesNothingAndTheRerunDoesOnlyWhatIsLeft) {
+  for (const char* name : {"p1.step", "p2.step", "p3.step", "p4.step"}) copy(kStep, std::string("lib/") + name);
+  const std::string whole = path("whole"), killed = path("killed");
+  ASSERT_EQ(run("batch " + path("lib") + " -o " + whole + " --jobs 1").status, 0);
+  // SIGKILL once the first part's record is on disk; the workers die with the batch.
+  const std::string script = CADNURBS_EXE " batch " + path("lib") + " -o " + killed + " --jobs 1 2>/dev/null & pid=$!; " +
+                             "while [ ! -e " + killed + "/p1.step.json ]; do sleep 0.02; done; kill -9 $pid; wait $pid";
+  std::system(("bash -c '" + script + "'").c_str());
+  const CommandResult rerun = run("batch " + path("lib") + " -o " + killed + " --jobs 1");
+  EXPECT_EQ(rerun.status, 0) << rerun.err;
+  int now = -1, before = -1;
+  ASSERT_EQ(std::sscanf(rerun.out.c_str() + killed.size(), ": 4 parts: %d converted now, %d done before", &now, &before), 2)
+      << rerun.out;
+  EXPECT_GE(before, 1);
+  EXPECT_LE(before, 3);  // the kill came before the last part was done
+  EXPECT_EQ(now + before, 4);
+  EXPECT_EQ(read_file(killed + "/report.md"), read_file(whole + "/report.md"));
+}
+
+TEST_F(Batch, APartThatHangsIsStoppedNamedAndTheBatchGoesOn) {
+  copy(kStep, "lib/hangs.step");
+  const std::string out = path("out");
+  const CommandResult r = run("batch " + path("lib") + " -o " + out + " --timeout 4", "CADNURBS_WALL_FAULT=parse:sleep ");
+  EXPECT_EQ(r.status, 3);
+  const nlohmann::json j = report(out);
+  ASSERT_EQ(j["parts"].size(), 1u);
+  EXPECT_EQ(j["parts"][0]["error"], "exceeded 3.6 s while parsing");
+}
+
+}  // namespace
+}  // namespace cadnurbs::test
