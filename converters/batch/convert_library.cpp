@@ -87,8 +87,13 @@ PartRecord record_failure(const BatchOptions& options, const LibraryPart& part, 
     hash = content_hash(input);
   } catch (const FileError&) {
   }
-  fs::create_directories(stem.parent_path());
-  write_file_atomically(record_path(stem), batch_record_json(record, {part.relative, hash, options_key(options), seconds}));
+  try {
+    fs::create_directories(stem.parent_path());
+    write_file_atomically(record_path(stem), batch_record_json(record, {part.relative, hash, options_key(options), seconds}));
+  } catch (const std::exception& error) {
+    // The part stays in this run's report; a rerun does it again. The batch itself goes on.
+    std::cerr << "batch: " << part.relative << ": its record cannot be written: " << error.what() << "\n";
+  }
   return record;
 }
 
