@@ -395,6 +395,11 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
 
 }  // namespace
 
+std::string record_error(std::string message, const std::string& input) {
+  if (message.starts_with(input + ": ")) message.erase(0, input.size() + 2);
+  return message;
+}
+
 PartRecord measure_part(const std::string& input, const PartMeasurementOptions& options, PartViews* views) {
   try {
     return measure(input, options, views);
@@ -402,9 +407,7 @@ PartRecord measure_part(const std::string& input, const PartMeasurementOptions& 
     PartRecord failed;
     failed.input = input;
     failed.failed = true;
-    failed.error = e.what();
-    // The record names the input already: keep the reason, not the reader's "<input>: " before it.
-    if (failed.error.starts_with(input + ": ")) failed.error.erase(0, input.size() + 2);
+    failed.error = record_error(e.what(), input);
     if (views) *views = {};
     return failed;
   }

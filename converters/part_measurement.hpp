@@ -24,4 +24,8 @@ struct PartMeasurementOptions {
 // null): also the texts the HTML report draws, the compact X3D NURBS file and the mesh at D as X3D.
 PartRecord measure_part(const std::string& input, const PartMeasurementOptions& options, PartViews* views = nullptr);
 
+// A reader's or writer's one-line message as a record's error: without the "<input>: " it starts with,
+// since a record names its input already.
+std::string record_error(std::string message, const std::string& input);
+
 }  // namespace cadnurbs

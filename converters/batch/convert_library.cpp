@@ -35,10 +35,9 @@ PartRecord failed_record(const std::string& part, const std::string& error) {
   return record;
 }
 
-// A reader's or writer's message without the "<input>: " it starts with: a record names its part already.
-std::string reason_of(std::string message, const std::string& input) {
-  if (message.starts_with(input + ": ")) message.erase(0, input.size() + 2);
-  return message;
+// The part's file, as the worker reads it.
+std::string input_path(const BatchOptions& options, const LibraryPart& part) {
+  return (fs::path(options.in_dir) / part.relative).string();
 }
 
 // The part's outputs, removed when the part fails: a failed part leaves its record only.
@@ -50,7 +49,7 @@ void remove_outputs(const BatchOptions& options, const fs::path& stem) {
 // The worker's work for one part: the report's record, then each output, then the record on disk.
 int run_part(const BatchOptions& options, const LibraryPart& part, const fs::path& stem) {
   const auto start = Clock::now();
-  const std::string input = (fs::path(options.in_dir) / part.relative).string();
+  const std::string input = input_path(options, part);
   // The STEP/IGES wall inside the worker stops a little before the worker is killed, naming the stage.
   read_limits() = {0.9 * options.seconds, options.megabytes};
   PartMeasurementOptions measurement;
@@ -65,7 +64,7 @@ int run_part(const BatchOptions& options, const LibraryPart& part, const fs::pat
     try {
       if (run_convert(args) != 0) record = failed_record(part.relative, "convert to ." + target + " failed");
     } catch (const std::exception& error) {
-      record = failed_record(part.relative, reason_of(error.what(), input));
+      record = failed_record(part.relative, record_error(error.what(), input));
     }
   }
   if (record.failed) remove_outputs(options, stem);
@@ -79,7 +78,7 @@ int run_part(const BatchOptions& options, const LibraryPart& part, const fs::pat
 // The record a worker that ended badly leaves: the reason, on disk like any other.
 PartRecord record_failure(const BatchOptions& options, const LibraryPart& part, const fs::path& stem,
                           const std::string& reason, double seconds) {
-  const std::string input = (fs::path(options.in_dir) / part.relative).string();
+  const std::string input = input_path(options, part);
   PartRecord record = failed_record(part.relative, reason);
   remove_outputs(options, stem);
   std::string hash;
@@ -129,7 +128,7 @@ BatchSummary convert_library(const BatchOptions& options) {
   summary.parts = static_cast<int>(parts.size());
   std::vector<std::optional<PartRecord>> results(parts.size());
   std::vector<fs::path> stems(parts.size());
-  std::vector<size_t> todo;
+  std::vector<size_t> to_convert;
   int finished = 0, failed = 0;
   const auto started = Clock::now();
   // On a terminal: one line redrawn in place (count, failures, rate, ETA), failures kept above it. Else
@@ -169,7 +168,7 @@ BatchSummary convert_library(const BatchOptions& options) {
       log(i, *results[i], "");
       continue;
     }
-    const std::string input = (fs::path(options.in_dir) / part.relative).string();
+    const std::string input = input_path(options, part);
     if (const auto done = read_batch_record(record_path(stems[i]))) {
       std::string hash;
       try {
@@ -183,14 +182,14 @@ BatchSummary convert_library(const BatchOptions& options) {
         continue;
       }
     }
-    todo.push_back(i);
+    to_convert.push_back(i);
   }
   const WorkerLimits limits{options.seconds, options.megabytes};
   run_in_workers(
-      static_cast<int>(todo.size()), options.jobs, limits,
-      [&](int k) { return run_part(options, parts[todo[k]], stems[todo[k]]); },
+      static_cast<int>(to_convert.size()), options.jobs, limits,
+      [&](int k) { return run_part(options, parts[to_convert[k]], stems[to_convert[k]]); },
       [&](int k, const WorkerOutcome& outcome) {
-        const size_t i = todo[k];
+        const size_t i = to_convert[k];
         std::string reason = outcome.reason(limits);
         std::optional<BatchRecord> written;
         if (reason.empty() && !(written = read_batch_record(record_path(stems[i])))) reason = "the worker left no record";
