@@ -13,8 +13,8 @@ namespace cadnurbs {
 namespace {
 
 const char* kHelp =
-    "usage: cadnurbs batch IN_DIR -o OUT_DIR [--jobs N] [--to EXT,...] [--deviation D] [--timeout S]\n"
-    "                      [--memory MB] [--shard K/N]\n"
+    "usage: cadnurbs batch IN_DIR -o OUT_DIR [--jobs N] [--to EXT,...] [--inputs EXT,...]\n"
+    "                      [--deviation D] [--timeout S] [--memory MB] [--shard K/N]\n"
     "       cadnurbs batch --merge OUT_DIR\n"
     "Converts every part under IN_DIR (a file named as an input format, or holding one when its name\n"
     "says nothing), each in a worker process of its own, N at a time, into OUT_DIR's mirror of IN_DIR:\n"
@@ -22,9 +22,11 @@ const char* kHelp =
     "schema, docs/report.md, plus a \"batch\" object: content hash, options, seconds). A part that fails,\n"
     "crashes, hangs or runs out of memory is recorded with its reason and the batch goes on. A second\n"
     "run skips the parts whose record has the same content hash and options. Ends with the combined\n"
-    "report: OUT_DIR/report.md, report.json, report.csv.\n"
+    "report: OUT_DIR/report.md, report.json, report.csv and report.html (library-wide charts).\n"
     "  --jobs N        workers at a time (default: the number of cores)\n"
     "  --to EXT,...    outputs per part (default x3dv; any output extension of convert)\n"
+    "  --inputs EXT,...  only the parts of these input formats (such as step,iges: a library's\n"
+    "                  shipped meshes left out); default: every part\n"
     "  --deviation D   the report's maximum mesh deviation D in millimetres (default 1)\n"
     "  --timeout S     per part, wall and CPU time (default 300)\n"
     "  --memory MB     per part, address space (default 4096)\n"
@@ -48,7 +50,7 @@ std::vector<std::string> split_list(const std::string& text) {
 }  // namespace
 
 int run_batch(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("batch", args, {"output", "jobs", "to", "deviation", "timeout", "memory", "shard"},
+  const Arguments a = parse_arguments("batch", args, {"output", "jobs", "to", "inputs", "deviation", "timeout", "memory", "shard"},
                                       {"merge", "help"});
   if (a.has("help")) {
     std::cout << kHelp;
@@ -57,7 +59,7 @@ int run_batch(const std::vector<std::string>& args) {
   if (a.has("merge")) {
     if (a.positional.size() != 1) throw UsageError("--merge needs the one OUT_DIR of the shards");
     const BatchSummary s = merge_batch(a.positional[0]);
-    std::cout << a.positional[0] << ": " << s.parts << " parts, " << s.failed << " failed; report.md, report.json, report.csv\n";
+    std::cout << a.positional[0] << ": " << s.parts << " parts, " << s.failed << " failed; report.md, report.json, report.csv, report.html\n";
     return s.failed > 0 ? kSomeFailed : 0;
   }
   if (a.positional.size() != 1 || !a.has("output")) throw UsageError("needs one IN_DIR and -o OUT_DIR (see --help)");
@@ -71,6 +73,10 @@ int run_batch(const std::vector<std::string>& args) {
   for (auto& target : options.targets) {
     if (target.front() == '.') target.erase(0, 1);
     output_format("x." + target);  // refuses an unknown one before any work
+  }
+  if (a.has("inputs")) {
+    for (const auto& name : split_list(a.value("inputs"))) options.inputs.push_back(&named_input_format(name));
+    if (options.inputs.empty()) throw UsageError("--inputs needs at least one extension");
   }
   options.deviation_mm = a.number("deviation", options.deviation_mm);
   if (!(options.deviation_mm > 0)) throw UsageError("--deviation must be a positive number of millimetres");

@@ -105,6 +105,20 @@ class Folder {
   fs::path path_;
 };
 
+// Runs `write_and_measure` for the representation `label` written at `path`. A format that cannot hold
+// this part (VRML97 has no PROTO for a NurbsCurve node yet) costs that representation, not the record:
+// the failure becomes a note naming the format, never the temporary file, and false is returned.
+template <class Work>
+bool measured_or_noted(PartRecord& record, const std::string& label, const fs::path& path, Work&& write_and_measure) {
+  try {
+    write_and_measure();
+    return true;
+  } catch (const std::exception& e) {
+    record.warnings.push_back(label + ": not measured: " + record_error(e.what(), path.string()));
+    return false;
+  }
+}
+
 // Size of the file and of its gzip'd form; returns the file's bytes for the reader that reads it back.
 std::string measure_bytes(const fs::path& path, RepresentationFigures& figures) {
   std::string bytes = read_file(path.string());
@@ -354,10 +368,14 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
   write_options.title = fs::path(input).filename().string();
   for (const auto& file : kNurbsFiles) {
     const fs::path path = folder.file(stem + (file.compact ? "-compact" : "-exact"), file.extension);
-    write_scene(path.string(), file.compact ? compact : scene, write_options);
     RepresentationFigures f{file.key, file.label, RepresentationKind::nurbs, 0, 0, 0, 0, 0, ""};
-    measure_bytes(path, f);
-    const NurbsStorage read_back = nurbs_storage(read_scene(path.string()));
+    NurbsStorage read_back;
+    const bool written = measured_or_noted(record, file.label, path, [&] {
+      write_scene(path.string(), file.compact ? compact : scene, write_options);
+      measure_bytes(path, f);
+      read_back = nurbs_storage(read_scene(path.string()));
+    });
+    if (!written) continue;
     f.floats = read_back.total_floats();
     f.integers = read_back.polygon_corners;
     f.deviation = file.compact ? tolerance : 0.5 * tolerance;
@@ -376,15 +394,18 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
                               " triangles of the mesh at D could not be certified");
   for (const auto& file : kMeshFiles) {
     const fs::path path = folder.file(stem + "-mesh", file.extension);
-    write_scene(path.string(), meshed.meshes, write_options);
     TriangleMesh as_read;
-    record.representations.push_back(mesh_figures(file, path, scene, as_read));
+    const bool written = measured_or_noted(record, file.label, path, [&] {
+      write_scene(path.string(), meshed.meshes, write_options);
+      record.representations.push_back(mesh_figures(file, path, scene, as_read));
+    });
     // The indexed figures: the first file's mesh (the IndexedFaceSet) with its shared vertices welded.
-    if (&file == &kMeshFiles[0]) record.mesh = mesh_storage(weld_exact(as_read));
+    if (written && record.mesh.vertices == 0) record.mesh = mesh_storage(weld_exact(as_read));
   }
   add_encoded_meshes(record, meshed.sewn ? meshed.faces : scene, folder, stem);
   if (views) {
-    views->nurbs_x3dv = read_file(folder.file(stem + "-compact", ".x3dv").string());
+    const fs::path nurbs_view = folder.file(stem + "-compact", ".x3dv");
+    if (fs::exists(nurbs_view)) views->nurbs_x3dv = read_file(nurbs_view.string());
     const fs::path mesh_view = folder.file(stem + "-mesh", ".x3dv");
     write_scene(mesh_view.string(), meshed.meshes, write_options);
     views->mesh_x3dv = read_file(mesh_view.string());

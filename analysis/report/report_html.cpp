@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "analysis/report/html_text.hpp"
 #include "analysis/report/reference_figures.hpp"
 #include "analysis/report/report_formats.hpp"
 #include "analysis/report/report_html_assets.hpp"
@@ -15,57 +16,6 @@
 namespace cadnurbs {
 
 namespace {
-
-// Markup-safe text for element content and quoted attribute values.
-std::string escape_html(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-// JSON text made safe inside <script type="application/json">: in JSON '<' occurs only inside strings,
-// where \u003c means the same, so no "</script" or "<!--" can end or confuse the element.
-std::string script_json(const std::string& json) {
-  std::string out;
-  out.reserve(json.size());
-  for (char c : json) {
-    if (c == '<')
-      out += "\\u003c";
-    else
-      out += c;
-  }
-  return out;
-}
-
-// A string as JSON, invalid UTF-8 replaced rather than refused (an input path may hold anything).
-std::string json_string(const std::string& text) {
-  return nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-}
-
-bool contains_ignoring_case(const std::string& text, const std::string& lower_needle) {
-  const auto found = std::search(text.begin(), text.end(), lower_needle.begin(), lower_needle.end(),
-                                 [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
-  return found != text.end();
-}
-
-// A library file for a <script> element. Script text cannot be escaped, so one that would end the
-// element early is refused (none of the pinned versions does; a new version is caught here).
-const std::string& inline_script(const std::string& asset) {
-  const std::string& text = report_html_asset(asset);
-  if (contains_ignoring_case(text, "</script") || text.find("<!--") != std::string::npos)
-    throw std::runtime_error("report_html: " + asset + " contains </script or <!-- and cannot be inlined");
-  return text;
-}
 
 std::string base64(const std::string& bytes) {
   static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -94,13 +44,6 @@ std::string x_ite_stylesheet() {
   return css;
 }
 
-// 1234567 -> "1 234 567" (narrow no-break spaces): byte counts people can read.
-std::string grouped(long value) {
-  std::string digits = std::to_string(value < 0 ? -value : value);
-  for (int at = int(digits.size()) - 3; at > 0; at -= 3) digits.insert(std::size_t(at), "\u202f");
-  return value < 0 ? "-" + digits : digits;
-}
-
 // Whether record `index` gets 3D views: measured, and given a scene text.
 bool has_views(const std::vector<PartRecord>& records, const std::vector<PartViews>& views, std::size_t index) {
   return !records[index].failed && index < views.size() &&
@@ -108,11 +51,6 @@ bool has_views(const std::vector<PartRecord>& records, const std::vector<PartVie
 }
 
 const char* const page_style = R"css(
-body { font-family: sans-serif; margin: 1.5em auto; max-width: 1100px; padding: 0 1em; color: #222; background: #fff; }
-h1 { font-size: 1.6em; } h2 { font-size: 1.25em; margin-top: 2em; border-bottom: 1px solid #ccc; }
-table { border-collapse: collapse; margin: 0.8em 0; font-size: 0.9em; }
-th, td { border: 1px solid #ccc; padding: 0.25em 0.5em; text-align: left; vertical-align: top; }
-td.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 .note, figcaption { color: #555; font-size: 0.85em; }
 .failed li { margin: 0.3em 0; }
 .charts, .views { display: flex; flex-wrap: wrap; gap: 1em; }
@@ -121,8 +59,6 @@ td.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowra
 .view-box { height: 340px; border: 1px solid #ddd; background: #f4f4f4; color: #555; font-size: 0.85em; }
 .view-box x3d-canvas { display: block; width: 100%; height: 100%; }
 .reference caption { caption-side: top; text-align: left; font-weight: bold; padding: 0.3em 0; }
-footer { margin-top: 3em; color: #555; font-size: 0.8em; }
-footer pre { white-space: pre-wrap; max-height: 20em; overflow: auto; }
 )css";
 
 // Before X_ITE's script: X_ITE takes the URL of its own <script> as the base of its stylesheet, fonts,
@@ -470,7 +406,7 @@ std::string report_html(const std::vector<PartRecord>& records, const std::vecto
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
          "<meta name=\"generator\" content=\"cadnurbs\">\n<title>cadnurbs storage report</title>\n<style>"
-      << page_style << "</style>\n<script>" << inline_script("chart.umd.min.js") << "</script>\n";
+      << base_page_style << page_style << "</style>\n<script>" << inline_script("chart.umd.min.js") << "</script>\n";
   if (any_view)
     out << "<script>" << before_x_ite << "</script>\n<script>" << inline_script("x_ite.min.js") << "</script>\n<script>"
         << after_x_ite_head << base64(report_html_asset("mikktspace_bg.wasm")) << after_x_ite_tail

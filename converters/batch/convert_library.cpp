@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "analysis/report/library_report_html.hpp"
 #include "analysis/report/report_formats.hpp"
 #include "converters/batch/batch_record.hpp"
 #include "converters/batch/library_listing.hpp"
@@ -100,6 +101,7 @@ void write_reports(const fs::path& out_dir, const std::string& name, const std::
   write_file_atomically((out_dir / (name + ".md")).string(), report_markdown(records));
   write_file_atomically((out_dir / (name + ".json")).string(), report_json(records));
   write_file_atomically((out_dir / (name + ".csv")).string(), report_csv(records));
+  write_file_atomically((out_dir / (name + ".html")).string(), library_report_html(records));
 }
 
 std::string seconds_text(double s) {
@@ -119,7 +121,7 @@ std::string options_key(const BatchOptions& options) {
 }
 
 BatchSummary convert_library(const BatchOptions& options) {
-  const std::vector<LibraryPart> parts = shard_of(list_library(options.in_dir), options.shard, options.shards);
+  const std::vector<LibraryPart> parts = shard_of(of_formats(list_library(options.in_dir), options.inputs), options.shard, options.shards);
   std::error_code error;
   fs::create_directories(options.out_dir, error);
   if (error || !fs::is_directory(options.out_dir)) throw FileError(options.out_dir + ": cannot be made a folder");

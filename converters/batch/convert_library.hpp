@@ -4,12 +4,15 @@
 #include <string>
 #include <vector>
 
+#include "converters/file_formats.hpp"
+
 namespace cadnurbs {
 
 struct BatchOptions {
   std::string in_dir, out_dir;
   int jobs = 1;                              // workers at a time
   std::vector<std::string> targets{"x3dv"};  // output extensions, each written as OUT_DIR/<part>.<ext>
+  std::vector<const FileFormat*> inputs;     // only parts of these formats (library_listing.hpp); empty: all
   double deviation_mm = 1.0;                 // D of the report's meshes (the report's default)
   double seconds = 300;                      // per part: wall and CPU time
   long megabytes = 4096;                     // per part: address space
@@ -31,12 +34,12 @@ struct BatchSummary {
 // Runs the batch (the caller must run one thread: workers are forks). Per part: OUT_DIR/<part>.<target>
 // for each target and OUT_DIR/<part>.json (batch_record.hpp), the record last, atomically. Logs one line
 // per part to stderr. Ends with the combined report of the slice: OUT_DIR/report.md, report.json,
-// report.csv (with shards > 1: report-<shard>-of-<shards>.*). Throws FileError when IN_DIR cannot be
+// report.csv, report.html (with shards > 1: report-<shard>-of-<shards>.*). Throws FileError when IN_DIR cannot be
 // listed or OUT_DIR not made.
 BatchSummary convert_library(const BatchOptions& options);
 
 // The combined report of every record under OUT_DIR (all shards'), written as OUT_DIR/report.md,
-// report.json, report.csv; returns the number of parts and of failed ones.
+// report.json, report.csv, report.html; returns the number of parts and of failed ones.
 BatchSummary merge_batch(const std::string& out_dir);
 
 }  // namespace cadnurbs

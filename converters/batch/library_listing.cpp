@@ -56,6 +56,16 @@ std::vector<LibraryPart> list_library(const fs::path& in_dir) {
   return parts;
 }
 
+std::vector<LibraryPart> of_formats(const std::vector<LibraryPart>& parts, const std::vector<const FileFormat*>& formats) {
+  if (formats.empty()) return parts;
+  std::vector<LibraryPart> kept;
+  for (const auto& part : parts) {
+    const FileFormat* format = part.format ? part.format : format_of(part.relative);
+    if (std::find(formats.begin(), formats.end(), format) != formats.end()) kept.push_back(part);
+  }
+  return kept;
+}
+
 std::vector<LibraryPart> shard_of(const std::vector<LibraryPart>& parts, int shard, int shards) {
   if (shards < 1 || shard < 0 || shard >= shards) throw std::invalid_argument("shard_of: needs 0 <= shard < shards");
   std::vector<LibraryPart> slice;

@@ -24,6 +24,10 @@ struct LibraryPart {
 // the folder. Throws FileError "<in_dir>: ..." when the folder cannot be walked.
 std::vector<LibraryPart> list_library(const std::filesystem::path& in_dir);
 
+// The parts read as one of `formats` (a refused part: as its name says), in the same order; all of them
+// when `formats` is empty. `batch --inputs step,iges` keeps a library's shipped meshes out of a run.
+std::vector<LibraryPart> of_formats(const std::vector<LibraryPart>& parts, const std::vector<const FileFormat*>& formats);
+
 // The parts of slice `shard` of `shards` (0 <= shard < shards): every shards-th part of the stable order,
 // starting at `shard`, so that the slices are disjoint, cover the library and are about equally long.
 std::vector<LibraryPart> shard_of(const std::vector<LibraryPart>& parts, int shard, int shards);

@@ -55,6 +55,21 @@ TEST_F(Batch, ListingIsStableTellsUnnamedPartsByContentAndRefusesLinksOut) {
   EXPECT_EQ(parts[0].refusal, "");
 }
 
+TEST_F(Batch, InputsKeepOnlyTheNamedFormatsTheirOtherExtensionsAndRefusedLinksOfThem) {
+  copy(kStep, "lib/b.step");
+  copy(kStep, "lib/d.stp");
+  copy(kIges, "lib/a/c.iges");
+  copy(kStep, "lib/noext");
+  make("lib/e.wrl", "#VRML V2.0 utf8\n");
+  fs::create_symlink("/etc/hostname", path("lib/link.step"));
+  const auto all = list_library(path("lib"));
+  EXPECT_EQ(names(of_formats(all, {})), names(all));
+  EXPECT_EQ(names(of_formats(all, {&named_input_format("step")})),
+            (std::vector<std::string>{"b.step", "d.stp", "link.step", "noext"}));
+  EXPECT_EQ(names(of_formats(all, {&named_input_format("IGES"), &named_input_format(".wrl")})),
+            (std::vector<std::string>{"a/c.iges", "e.wrl"}));
+}
+
 TEST_F(Batch, ShardsAreDisjointAndCoverTheLibrary) {
   std::vector<LibraryPart> all(10);
   for (int i = 0; i < 10; ++i) all[i].relative = "p" + std::to_string(i);
@@ -97,16 +112,27 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunReusesEveryR
   make("lib/garbage.iges", std::string("\x00\x01\x02 not IGES at all\n", 22));
   make("lib/truncated.step", read_file(kStep).substr(0, 5000));
   copy(kStep, "lib/wrong.stl");  // a STEP file named as STL fails as STL
+  // An assembly that contains itself (one usage occurrence of the corpus assembly made to relate #39 to
+  // #39): OpenCASCADE's transfer recurses until the stack runs out.
+  std::string assembly = read_file(CADNURBS_SHARED_DIR "/corpus/step/as1-oc-214.stp");
+  const std::string usage = "NEXT_ASSEMBLY_USAGE_OCCURRENCE('1','nut_1','',#39,#742,$)";
+  ASSERT_NE(assembly.find(usage), std::string::npos);
+  assembly.replace(assembly.find(usage), usage.size(), "NEXT_ASSEMBLY_USAGE_OCCURRENCE('1','nut_1','',#39,#39,$)");
+  make("lib/contains-itself.stp", assembly);
+  // A real part that needs minutes of CPU (over 300 s here): beyond the time limit, like a loop.
+  copy(CADNURBS_SHARED_DIR "/corpus/step/11752.stp", "lib/slow.stp");
   const std::string out = path("out");
-  const CommandResult r = run("batch " + path("lib") + " -o " + out + " --jobs 2");
+  const CommandResult r = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 20");
   EXPECT_EQ(r.status, 3) << r.err;
-  EXPECT_EQ(r.out, out + ": 6 parts: 6 converted now, 0 done before, 4 failed\n");
+  EXPECT_EQ(r.out, out + ": 8 parts: 8 converted now, 0 done before, 6 failed\n");
   const nlohmann::json j = report(out);
-  ASSERT_EQ(j["parts"].size(), 6u);
+  ASSERT_EQ(j["parts"].size(), 8u);
   std::vector<std::string> inputs;
   for (const auto& part : j["parts"]) inputs.push_back(part["input"]);
-  EXPECT_EQ(inputs, (std::vector<std::string>{"empty.step", "garbage.iges", "good.step", "sub/good.iges",
-                                              "truncated.step", "wrong.stl"}));
+  EXPECT_EQ(inputs, (std::vector<std::string>{"contains-itself.stp", "empty.step", "garbage.iges", "good.step",
+                                              "slow.stp", "sub/good.iges", "truncated.step", "wrong.stl"}));
+  EXPECT_EQ(j["parts"][0]["error"], "crashed with SIGSEGV while transferring");
+  EXPECT_EQ(j["parts"][4]["error"].get<std::string>().rfind("exceeded ", 0), 0u) << j["parts"][4]["error"];
   for (const auto& part : j["parts"]) {
     const std::string input = part["input"];
     const bool good = input == "good.step" || input == "sub/good.iges";
@@ -118,14 +144,14 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunReusesEveryR
     EXPECT_TRUE(fs::exists(out + "/" + input + ".json")) << input;
   }
   const std::string first_report = read_file(out + "/report.md");
-  const CommandResult again = run("batch " + path("lib") + " -o " + out + " --jobs 2");
+  const CommandResult again = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 20");
   EXPECT_EQ(again.status, 3);
-  EXPECT_EQ(again.out, out + ": 6 parts: 0 converted now, 6 done before, 4 failed\n");
+  EXPECT_EQ(again.out, out + ": 8 parts: 0 converted now, 8 done before, 6 failed\n");
   EXPECT_EQ(read_file(out + "/report.md"), first_report);
   // A changed input is done again; the others are not.
   make("lib/empty.step", read_file(kStep));
-  const CommandResult changed = run("batch " + path("lib") + " -o " + out + " --jobs 2");
-  EXPECT_EQ(changed.out, out + ": 6 parts: 1 converted now, 5 done before, 3 failed\n");
+  const CommandResult changed = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 20");
+  EXPECT_EQ(changed.out, out + ": 8 parts: 1 converted now, 7 done before, 5 failed\n");
 }
 
 TEST_F(Batch, AKilledBatchLosesNothingAndTheRerunDoesOnlyWhatIsLeft) {

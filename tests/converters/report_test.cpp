@@ -192,6 +192,25 @@ TEST_F(Report, ABadInputIsListedAndTheOthersAreStillReported) {
   EXPECT_NE(csv.find(good + ",ok,"), std::string::npos) << csv;
 }
 
+// nurbs_weights.x3dv holds NurbsCurve nodes, which VRML97 cannot take (no PROTO for them yet): the two
+// VRML97 NURBS files and the mesh files are left out, each with a note naming the format, and the rest
+// of the record (X3D NURBS, .cnb, Draco, meshoptimizer) is measured.
+TEST_F(Report, AFormatThatCannotHoldThePartCostsItsRepresentationNotTheRecord) {
+  const std::string input = std::string(CADNURBS_SHARED_DIR) + "/corpus/vrml/nurbs_weights.x3dv";
+  const CommandResult r = run("report " + input + " --format json -o " + path("r.json"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json part = Json::parse(read_file(path("r.json")))["parts"][0];
+  EXPECT_EQ(part["status"], "ok");
+  std::vector<std::string> keys;
+  for (const auto& rep : part["representations"]) keys.push_back(rep["key"]);
+  EXPECT_EQ(std::count(keys.begin(), keys.end(), "wrl-compact"), 0);
+  EXPECT_EQ(std::count(keys.begin(), keys.end(), "x3dv-compact"), 1);
+  const std::string warnings = part["warnings"].dump();
+  EXPECT_NE(warnings.find("VRML97 NURBS, compact: not measured: the NURBS PROTO library has no PROTO NurbsCurve"),
+            std::string::npos) << warnings;
+  EXPECT_EQ(warnings.find("cadnurbs-report-"), std::string::npos) << warnings;  // no temporary path
+}
+
 TEST_F(Report, MarkdownStatesTheAccountingAndThePapersFigures) {
   const std::string in = std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-post.x3dv";
   const CommandResult r = run("report " + in + " -o " + path("r.md"));
