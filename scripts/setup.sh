@@ -15,6 +15,7 @@ debian_packages=(
   view3dscene xvfb xauth chromium fonts-dejavu-core
   clang libclang-rt-14-dev
   python3
+  slurm-wlm munge
 )
 
 # node/npm may come from elsewhere than Debian; the packages only when the commands are missing.
