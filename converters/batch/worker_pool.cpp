@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -46,6 +47,7 @@ std::string number_text(double x) {
 }  // namespace
 
 std::string WorkerOutcome::reason(const WorkerLimits& limits) const {
+  if (!not_started.empty()) return "no worker could be started (fork: " + not_started + ")";
   if (timed_out) return "exceeded " + number_text(limits.seconds) + " s";
   if (signal == SIGXCPU || signal == SIGKILL) return "exceeded " + number_text(limits.seconds) + " s of CPU time";
   if (signal != 0) {
@@ -75,6 +77,7 @@ void run_in_workers(int count, int jobs, const WorkerLimits& limits, const std::
       if (pid == 0) become_worker(batch, limits, task, next);
       if (pid < 0) {
         WorkerOutcome failed;
+        failed.not_started = std::strerror(errno);
         done(next++, failed);
         continue;
       }

@@ -21,8 +21,10 @@ struct WorkerOutcome {
   int signal = 0;         // the signal that ended it, else 0
   bool timed_out = false; // killed at the wall-time limit
   double seconds = 0;     // wall time it ran
+  std::string not_started;  // why no worker could be made (fork's error), else ""
   // One line for a record: "" for exit status 0, else "crashed with SIGSEGV", "exceeded 300 s",
-  // "exceeded 300 s of CPU time", "the worker ended with exit status N".
+  // "exceeded 300 s of CPU time", "the worker ended with exit status N", "no worker could be started
+  // (fork: ...)".
   std::string reason(const WorkerLimits& limits) const;
 };
 

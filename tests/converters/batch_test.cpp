@@ -4,12 +4,14 @@
 // that hangs.
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "command_fixture.hpp"
 #include "converters/batch/library_listing.hpp"
+#include "converters/batch/worker_pool.hpp"
 
 namespace cadnurbs::test {
 namespace {
@@ -68,6 +70,26 @@ TEST_F(Batch, InputsKeepOnlyTheNamedFormatsTheirOtherExtensionsAndRefusedLinksOf
             (std::vector<std::string>{"b.step", "d.stp", "link.step", "noext"}));
   EXPECT_EQ(names(of_formats(all, {&named_input_format("IGES"), &named_input_format(".wrl")})),
             (std::vector<std::string>{"a/c.iges", "e.wrl"}));
+}
+
+TEST(BatchWorker, EveryWayAWorkerEndsHasItsOwnReason) {
+  const WorkerLimits limits{300, 4096};
+  WorkerOutcome outcome;
+  outcome.exit_status = 0;
+  EXPECT_EQ(outcome.reason(limits), "");
+  outcome.exit_status = 2;
+  EXPECT_EQ(outcome.reason(limits), "the worker ended with exit status 2");
+  outcome = WorkerOutcome{};
+  outcome.signal = SIGSEGV;
+  EXPECT_EQ(outcome.reason(limits), "crashed with SIGSEGV");
+  outcome.signal = SIGXCPU;
+  EXPECT_EQ(outcome.reason(limits), "exceeded 300 s of CPU time");
+  outcome.timed_out = true;
+  outcome.signal = SIGKILL;
+  EXPECT_EQ(outcome.reason(limits), "exceeded 300 s");
+  outcome = WorkerOutcome{};
+  outcome.not_started = "Resource temporarily unavailable";
+  EXPECT_EQ(outcome.reason(limits), "no worker could be started (fork: Resource temporarily unavailable)");
 }
 
 TEST_F(Batch, ShardsAreDisjointAndCoverTheLibrary) {
