@@ -25,8 +25,9 @@ const char* kHelp =
     "report: OUT_DIR/report.md, report.json, report.csv and report.html (library-wide charts).\n"
     "  --jobs N        workers at a time (default: the number of cores)\n"
     "  --to EXT,...    outputs per part (default x3dv; any output extension of convert)\n"
-    "  --inputs EXT,...  only the parts of these input formats (such as step,iges: a library's\n"
-    "                  shipped meshes left out); default: every part\n"
+    "  --inputs EXT,...\n"
+    "                  only the parts of these input formats (such as step,iges: a library's shipped\n"
+    "                  meshes left out); default: every part\n"
     "  --deviation D   the report's maximum mesh deviation D in millimetres (default 1)\n"
     "  --timeout S     per part, wall and CPU time (default 300)\n"
     "  --memory MB     per part, address space (default 4096)\n"
@@ -50,8 +51,8 @@ std::vector<std::string> split_list(const std::string& text) {
 }  // namespace
 
 int run_batch(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("batch", args, {"output", "jobs", "to", "inputs", "deviation", "timeout", "memory", "shard"},
-                                      {"merge", "help"});
+  const Arguments a = parse_arguments(
+      "batch", args, {"output", "jobs", "to", "inputs", "deviation", "timeout", "memory", "shard"}, {"merge", "help"});
   if (a.has("help")) {
     std::cout << kHelp;
     return 0;
@@ -59,7 +60,8 @@ int run_batch(const std::vector<std::string>& args) {
   if (a.has("merge")) {
     if (a.positional.size() != 1) throw UsageError("--merge needs the one OUT_DIR of the shards");
     const BatchSummary s = merge_batch(a.positional[0]);
-    std::cout << a.positional[0] << ": " << s.parts << " parts, " << s.failed << " failed; report.md, report.json, report.csv, report.html\n";
+    std::cout << a.positional[0] << ": " << s.parts << " parts, " << s.failed
+              << " failed; report.md, report.json, report.csv, report.html\n";
     return s.failed > 0 ? kSomeFailed : 0;
   }
   if (a.positional.size() != 1 || !a.has("output")) throw UsageError("needs one IN_DIR and -o OUT_DIR (see --help)");

@@ -84,17 +84,20 @@ std::string chart_data(const LibrarySummary& summary) {
   nlohmann::json data;
   data["totals"] = nlohmann::json::array();
   for (const auto& t : summary.totals)
-    data["totals"].push_back({{"label", t.label}, {"kind", kind_name(t.kind)}, {"bytes", t.bytes}, {"gzip_bytes", t.gzip_bytes}});
+    data["totals"].push_back(
+        {{"label", t.label}, {"kind", kind_name(t.kind)}, {"bytes", t.bytes}, {"gzip_bytes", t.gzip_bytes}});
   data["ratio_bins"] = nlohmann::json::array();
   for (const auto& b : summary.ratio_bins)
-    data["ratio_bins"].push_back({{"label", bin_label(b)}, {"high", std::isinf(b.high) ? 1e300 : b.high}, {"parts", b.parts}});
+    data["ratio_bins"].push_back(
+        {{"label", bin_label(b)}, {"high", std::isinf(b.high) ? 1e300 : b.high}, {"parts", b.parts}});
   data["failures"] = nlohmann::json::array();
   for (const auto& f : summary.failures) data["failures"].push_back({{"reason", f.reason}, {"parts", f.parts.size()}});
   return data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string chart(const char* id, const char* label, const std::string& caption) {
-  return std::string("<figure><div class=\"chart-box\"><canvas class=\"bars\" id=\"") + id + "\" data-part=\"" + id + "\" role=\"img\" aria-label=\"" + label +
+  return std::string("<figure><div class=\"chart-box\"><canvas class=\"bars\" id=\"") + id + "\" data-part=\"" + id +
+         "\" role=\"img\" aria-label=\"" + label +
          "\"></canvas></div><figcaption>" + caption + "</figcaption></figure>\n";
 }
 
@@ -135,7 +138,8 @@ std::string failure_section(const LibrarySummary& s) {
       << "<table><thead><tr><th>reason</th><th>parts</th><th>which</th></tr></thead><tbody>\n";
   for (const auto& f : s.failures) {
     out << "<tr><td>" << escape_html(f.reason) << "</td><td class=\"n\">" << f.parts.size() << "</td><td>";
-    for (std::size_t i = 0; i < f.parts.size(); ++i) out << (i ? ", " : "") << "<code>" << escape_html(f.parts[i]) << "</code>";
+    for (std::size_t i = 0; i < f.parts.size(); ++i)
+      out << (i ? ", " : "") << "<code>" << escape_html(f.parts[i]) << "</code>";
     out << "</td></tr>\n";
   }
   out << "</tbody></table></section>\n";

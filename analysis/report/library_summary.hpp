@@ -45,9 +45,10 @@ struct LibrarySummary {
 LibrarySummary summarise_library(const std::vector<PartRecord>& records);
 
 // A failed record's error in the form its kind shares with others: a leading location ("line 278: ",
-// "entity #12: ", "object 3 (ON_Brep): ", a path with a slash, a file name) dropped, each run of digits written as N, and a closing
-// parenthesised aside dropped. "line 278: unsupported node CoordinateInterpolator (outside the VRML97
-// subset)" -> "unsupported node CoordinateInterpolator"; "exceeded 300 s" -> "exceeded N s".
+// "entity #12: ", "object 3 (ON_Brep): ", a path with a slash, a file name) dropped, each run of digits
+// written as N, and a closing parenthesised aside dropped. "line 278: unsupported node
+// CoordinateInterpolator (outside the VRML97 subset)" -> "unsupported node CoordinateInterpolator";
+// "exceeded 300 s" -> "exceeded N s".
 std::string failure_reason(const std::string& error);
 
 }  // namespace cadnurbs

@@ -34,8 +34,8 @@ struct BatchSummary {
 // Runs the batch (the caller must run one thread: workers are forks). Per part: OUT_DIR/<part>.<target>
 // for each target and OUT_DIR/<part>.json (batch_record.hpp), the record last, atomically. Logs one line
 // per part to stderr. Ends with the combined report of the slice: OUT_DIR/report.md, report.json,
-// report.csv, report.html (with shards > 1: report-<shard>-of-<shards>.*). Throws FileError when IN_DIR cannot be
-// listed or OUT_DIR not made.
+// report.csv, report.html (with shards > 1: report-<shard>-of-<shards>.*). Throws FileError when IN_DIR
+// cannot be listed or OUT_DIR not made.
 BatchSummary convert_library(const BatchOptions& options);
 
 // The combined report of every record under OUT_DIR (all shards'), written as OUT_DIR/report.md,
