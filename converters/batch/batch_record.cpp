@@ -59,4 +59,6 @@ std::optional<BatchRecord> read_batch_record(const std::string& path) {
   }
 }
 
+bool failed_by_a_limit(const PartRecord& record) { return record.failed && record.error.rfind("exceeded ", 0) == 0; }
+
 }  // namespace cadnurbs

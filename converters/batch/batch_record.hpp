@@ -29,6 +29,11 @@ struct BatchRecord {
   BatchFields fields;
 };
 
+// Whether the record is of a part that failed by exceeding a time or memory limit (its error begins
+// "exceeded "): a result of the machine and its load as much as of the part, so a rerun does it again,
+// where a part that failed for its content keeps its record.
+bool failed_by_a_limit(const PartRecord& record);
+
 // The record in the file at `path`, or nothing when there is none or it cannot be parsed (a record
 // that cannot be read counts as not done).
 std::optional<BatchRecord> read_batch_record(const std::string& path);

@@ -177,7 +177,8 @@ BatchSummary convert_library(const BatchOptions& options) {
         hash = content_hash(input);
       } catch (const FileError&) {
       }
-      if (done->fields.options == key && done->fields.input_hash == hash && done->fields.part == part.relative) {
+      if (done->fields.options == key && done->fields.input_hash == hash && done->fields.part == part.relative &&
+          !failed_by_a_limit(done->record)) {
         results[i] = done->record;
         ++summary.reused;
         log(i, *results[i], "done before");

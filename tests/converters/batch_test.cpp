@@ -127,7 +127,7 @@ TEST_F(Batch, OutputsMayNotEscapeOutDir) {
   EXPECT_EQ(refusal("evil/x.step").rfind("its output would land outside OUT_DIR, at ", 0), 0u) << refusal("evil/x.step");
 }
 
-TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunReusesEveryRecord) {
+TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunRedoesOnlyALimitFailure) {
   copy(kStep, "lib/good.step");
   copy(kIges, "lib/sub/good.iges");
   make("lib/empty.step", "");
@@ -168,12 +168,14 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunReusesEveryR
   const std::string first_report = read_file(out + "/report.md");
   const CommandResult again = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 20");
   EXPECT_EQ(again.status, 3);
-  EXPECT_EQ(again.out, out + ": 8 parts: 0 converted now, 8 done before, 6 failed\n");
+  // The part that exceeded the time limit is done again (a limit depends on the machine's load); the
+  // others, failed for their content or converted, keep their records.
+  EXPECT_EQ(again.out, out + ": 8 parts: 1 converted now, 7 done before, 6 failed\n");
   EXPECT_EQ(read_file(out + "/report.md"), first_report);
   // A changed input is done again; the others are not.
   make("lib/empty.step", read_file(kStep));
   const CommandResult changed = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 20");
-  EXPECT_EQ(changed.out, out + ": 8 parts: 1 converted now, 7 done before, 5 failed\n");
+  EXPECT_EQ(changed.out, out + ": 8 parts: 2 converted now, 6 done before, 5 failed\n");
 }
 
 TEST_F(Batch, AKilledBatchLosesNothingAndTheRerunDoesOnlyWhatIsLeft) {
