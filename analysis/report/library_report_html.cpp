@@ -70,22 +70,14 @@ std::string bin_label(const RatioBin& bin) {
   return power_of_two_text(bin.low) + "\u2013" + power_of_two_text(bin.high);
 }
 
-const char* kind_name(RepresentationKind kind) {
-  switch (kind) {
-    case RepresentationKind::nurbs: return "nurbs";
-    case RepresentationKind::mesh: return "mesh";
-    case RepresentationKind::nurss: return "nurss";
-    case RepresentationKind::loop: return "loop";
-  }
-  return "nurbs";
-}
-
 std::string chart_data(const LibrarySummary& summary) {
   nlohmann::json data;
   data["totals"] = nlohmann::json::array();
   for (const auto& t : summary.totals)
-    data["totals"].push_back(
-        {{"label", t.label}, {"kind", kind_name(t.kind)}, {"bytes", t.bytes}, {"gzip_bytes", t.gzip_bytes}});
+    data["totals"].push_back({{"label", t.label},
+                              {"kind", representation_kind_name(t.kind)},
+                              {"bytes", t.bytes},
+                              {"gzip_bytes", t.gzip_bytes}});
   data["ratio_bins"] = nlohmann::json::array();
   for (const auto& b : summary.ratio_bins)
     data["ratio_bins"].push_back(
@@ -156,16 +148,14 @@ std::string parts_table(const std::vector<PartRecord>& records) {
           << "</td></tr>\n";
       continue;
     }
-    const auto* nurbs = smallest_representation(r, RepresentationKind::nurbs);
-    if (!nurbs) nurbs = smallest_representation(r, RepresentationKind::loop);
+    const auto* nurbs = smallest_smooth_representation(r);
     const auto* mesh = smallest_representation(r, RepresentationKind::mesh);
+    const double ratio = compression_ratio(r);
     out << "<tr><td>" << escape_html(r.input) << "</td><td class=\"n\">" << report_number(r.deviation) << " "
         << escape_html(r.unit) << "</td><td>" << (nurbs ? escape_html(nurbs->label) : "-") << "</td><td class=\"n\">"
         << (nurbs ? grouped(delivered_bytes(*nurbs)) : "-") << "</td><td>" << (mesh ? escape_html(mesh->label) : "-")
         << "</td><td class=\"n\">" << (mesh ? grouped(delivered_bytes(*mesh)) : "-") << "</td><td class=\"n\">"
-        << (nurbs && mesh && delivered_bytes(*mesh) > 0
-                ? report_number(double(delivered_bytes(*nurbs)) / double(delivered_bytes(*mesh)), 3)
-                : "-")
+        << (std::isnan(ratio) ? "-" : report_number(ratio, 3))
         << "</td></tr>\n";
   }
   out << "</tbody></table></section>\n";

@@ -14,15 +14,6 @@ namespace {
 constexpr int kLowestPower = -8;  // bins of powers of 2: [0, 1/256), [1/256, 1/128), ..., [4, inf)
 constexpr int kHighestPower = 2;
 
-// The ratio of `record`, or NaN when it has no file to compare.
-double compression_ratio(const PartRecord& record) {
-  const RepresentationFigures* mesh = smallest_representation(record, RepresentationKind::mesh);
-  const RepresentationFigures* smooth = smallest_representation(record, RepresentationKind::nurbs);
-  if (!smooth) smooth = smallest_representation(record, RepresentationKind::loop);
-  if (!mesh || !smooth || delivered_bytes(*mesh) <= 0) return std::numeric_limits<double>::quiet_NaN();
-  return double(delivered_bytes(*smooth)) / double(delivered_bytes(*mesh));
-}
-
 std::vector<RatioBin> empty_bins() {
   std::vector<RatioBin> bins;
   bins.push_back({0, std::ldexp(1.0, kLowestPower), 0});
@@ -32,6 +23,18 @@ std::vector<RatioBin> empty_bins() {
 }
 
 }  // namespace
+
+const RepresentationFigures* smallest_smooth_representation(const PartRecord& record) {
+  const RepresentationFigures* nurbs = smallest_representation(record, RepresentationKind::nurbs);
+  return nurbs ? nurbs : smallest_representation(record, RepresentationKind::loop);
+}
+
+double compression_ratio(const PartRecord& record) {
+  const RepresentationFigures* mesh = smallest_representation(record, RepresentationKind::mesh);
+  const RepresentationFigures* smooth = smallest_smooth_representation(record);
+  if (!mesh || !smooth || delivered_bytes(*mesh) <= 0) return std::numeric_limits<double>::quiet_NaN();
+  return double(delivered_bytes(*smooth)) / double(delivered_bytes(*mesh));
+}
 
 std::string failure_reason(const std::string& error) {
   // A place in the file, or a path (a file written on the way, a node path such as scene/node 0/shape 1).

@@ -41,6 +41,14 @@ struct LibrarySummary {
   std::vector<FailureReason> failures;   // most parts first, then by reason
 };
 
+// The part's smallest NURBS file, or for a part given as a mesh its Loop control mesh; null when it has
+// neither.
+const RepresentationFigures* smallest_smooth_representation(const PartRecord& record);
+
+// smallest_smooth_representation's delivered bytes over the smallest mesh file's; NaN when either is
+// missing or the mesh file is empty.
+double compression_ratio(const PartRecord& record);
+
 // The summary of `records` (any order; a failed record counts in `failed` and its reason only).
 LibrarySummary summarise_library(const std::vector<PartRecord>& records);
 

@@ -14,16 +14,6 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-const char* kind_name(RepresentationKind kind) {
-  switch (kind) {
-    case RepresentationKind::nurbs: return "nurbs";
-    case RepresentationKind::mesh: return "mesh";
-    case RepresentationKind::nurss: return "nurss";
-    case RepresentationKind::loop: return "loop";
-  }
-  return "";
-}
-
 Json json_number(double value) { return std::isnan(value) ? Json(nullptr) : Json(value); }
 
 Json nurbs_json(const NurbsStorage& s) {
@@ -69,7 +59,7 @@ Json record_json(const PartRecord& r) {
   for (const auto& f : r.representations)
     files.push_back(Json{{"key", f.key},
                          {"label", f.label},
-                         {"kind", kind_name(f.kind)},
+                         {"kind", representation_kind_name(f.kind)},
                          {"bytes", f.bytes},
                          {"gzip_bytes", f.gzip_bytes},
                          {"floats", f.floats},

@@ -8,6 +8,16 @@ const RepresentationFigures* find_representation(const PartRecord& record, const
   return nullptr;
 }
 
+const char* representation_kind_name(RepresentationKind kind) {
+  switch (kind) {
+    case RepresentationKind::nurbs: return "nurbs";
+    case RepresentationKind::mesh: return "mesh";
+    case RepresentationKind::nurss: return "nurss";
+    case RepresentationKind::loop: return "loop";
+  }
+  return "";
+}
+
 const RepresentationFigures* smallest_representation(const PartRecord& record, RepresentationKind kind) {
   const RepresentationFigures* best = nullptr;
   for (const auto& r : record.representations)

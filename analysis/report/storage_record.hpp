@@ -68,6 +68,9 @@ const RepresentationFigures* find_representation(const PartRecord& record, const
 // What delivering a representation costs: the smaller of the file and its gzip'd form.
 inline long delivered_bytes(const RepresentationFigures& r) { return r.bytes < r.gzip_bytes ? r.bytes : r.gzip_bytes; }
 
+// The kind's name in the report's JSON and the HTML pages' data: "nurbs", "mesh", "nurss", "loop".
+const char* representation_kind_name(RepresentationKind kind);
+
 // The representation of `kind` with the fewest delivered bytes (the first of equals), or null.
 const RepresentationFigures* smallest_representation(const PartRecord& record, RepresentationKind kind);
 
