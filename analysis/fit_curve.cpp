@@ -1,0 +1,363 @@
+#include "analysis/fit_curve.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "analysis/curve_fit_energy.hpp"
+#include "analysis/polak_ribiere.hpp"
+#include "core/knot_insertion.hpp"
+#include "core/knot_vector.hpp"
+
+namespace cadnurbs {
+namespace {
+
+std::string number(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+[[noreturn]] void refuse(const std::string& function, const std::string& reason) {
+  throw std::invalid_argument(function + ": " + reason);
+}
+
+void check_samples(const CurveSamples& samples, const std::string& function) {
+  if (samples.parameters.empty()) refuse(function, "no samples");
+  if (samples.parameters.size() != samples.points.size()) {
+    refuse(function, std::to_string(samples.parameters.size()) + " parameters for " +
+                         std::to_string(samples.points.size()) + " points");
+  }
+  for (size_t j = 0; j < samples.parameters.size(); ++j) {
+    const double t = samples.parameters[j];
+    if (!std::isfinite(t) || t < 0 || t > 1) refuse(function, "parameter " + std::to_string(j) + " (" + number(t) + ") is not in [0, 1]");
+    if (j > 0 && t < samples.parameters[j - 1]) refuse(function, "parameter " + std::to_string(j) + " decreases");
+    if (!samples.points[j].allFinite()) refuse(function, "point " + std::to_string(j) + " is not finite");
+  }
+}
+
+int distinct_parameter_count(const std::vector<double>& parameters) {
+  int distinct = 0;
+  for (size_t j = 0; j < parameters.size(); ++j) distinct += j == 0 || parameters[j] != parameters[j - 1];
+  return distinct;
+}
+
+void check_order(const CurveFitOptions& options, const std::string& function) {
+  if (options.order < 2 || options.order > 16) refuse(function, "order " + std::to_string(options.order) + " is not in 2..16");
+  if (!(options.minimum_knot_gap > 0)) refuse(function, "the minimum knot gap must be > 0");
+  if (!(options.minimum_weight > 0)) refuse(function, "the minimum weight must be > 0");
+}
+
+// Piegl & Tiller (9.69): interior knot j is the mean of the parameters around position j·d,
+// d = samples / (count - degree), so every span gets about the same number of samples.
+std::vector<double> averaged_knots(const std::vector<double>& parameters, int order, int count) {
+  const int degree = order - 1;
+  std::vector<double> knots(count + order, 0.0);
+  std::fill(knots.end() - order, knots.end(), 1.0);
+  const double d = static_cast<double>(parameters.size()) / (count - degree);
+  for (int j = 1; j < count - degree; ++j) {
+    const int i = static_cast<int>(j * d);
+    const double alpha = j * d - i;
+    knots[degree + j] = (1 - alpha) * parameters[i - 1] + alpha * parameters[i];
+  }
+  return knots;
+}
+
+// Pushes interior knots apart to at least `gap` (forward, then backward from the end at 1).
+void keep_gaps(std::vector<double>& knots, int order, int count, double gap) {
+  for (int i = order; i < count; ++i) knots[i] = std::max(knots[i], knots[i - 1] + gap);
+  for (int i = count - 1; i >= order; --i) knots[i] = std::min(knots[i], knots[i + 1] - gap);
+}
+
+// The conjugate-gradient unknowns: the interior knots (when optimised), then the weights (when optimised).
+class FitVariables {
+ public:
+  FitVariables(int order, int count, const CurveFitOptions& options)
+      : order_(order), count_(count), knots_(options.optimise_knots ? count - order : 0),
+        weights_(options.optimise_weights ? count : 0), knot_scale_(count - order + 1),
+        gap_(options.minimum_knot_gap * knot_scale_), minimum_weight_(options.minimum_weight) {}
+
+  Eigen::VectorXd pack(const std::vector<double>& knots, const std::vector<double>& weights) const {
+    Eigen::VectorXd x(knots_ + weights_);
+    for (int i = 0; i < knots_; ++i) x[i] = knots[order_ + i] * knot_scale_;
+    for (int i = 0; i < weights_; ++i) x[knots_ + i] = weights[i];
+    return x;
+  }
+  void unpack(const Eigen::VectorXd& x, std::vector<double>& knots, std::vector<double>& weights) const {
+    for (int i = 0; i < knots_; ++i) knots[order_ + i] = x[i] / knot_scale_;
+    for (int i = 0; i < weights_; ++i) weights[i] = x[knots_ + i];
+  }
+  Eigen::VectorXd pack_gradient(const CurveFitEvaluation& e) const {
+    Eigen::VectorXd g(knots_ + weights_);
+    for (int i = 0; i < knots_; ++i) g[i] = e.knot_gradient[order_ + i] / knot_scale_;
+    for (int i = 0; i < weights_; ++i) g[knots_ + i] = e.weight_gradient[i];
+    return g;
+  }
+
+  // Seed 003 §5.2: the step bound that keeps every gap (the domain's ends included, fixed) at least
+  // `gap_`, min over closing gaps of (u_{i+1} - u_i - gap) / (d_i - d_{i+1}); likewise the weights' floor.
+  double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d) const {
+    double bound = std::numeric_limits<double>::infinity();
+    for (int i = 0; i <= knots_ && knots_ > 0; ++i) {
+      const double left = i == 0 ? 0.0 : x[i - 1], right = i == knots_ ? knot_scale_ : x[i];
+      const double d_left = i == 0 ? 0.0 : d[i - 1], d_right = i == knots_ ? 0.0 : d[i];
+      if (d_left - d_right > 0) bound = std::min(bound, std::max(0.0, right - left - gap_) / (d_left - d_right));
+    }
+    for (int i = 0; i < weights_; ++i) {
+      const double w = x[knots_ + i], dw = d[knots_ + i];
+      if (dw < 0) bound = std::min(bound, std::max(0.0, w - minimum_weight_) / -dw);
+    }
+    return bound;
+  }
+
+  // The nearest direction that keeps the active constraints: along each chain of knots at the minimum
+  // gap, the components must not decrease (else the gap closes), which is an isotonic regression, solved
+  // by pooling adjacent violators into their average (seed 003: colliding knots move by their average);
+  // a chain touching an end of the domain is held (the ends are fixed). A weight at its floor keeps no
+  // downward component.
+  void adjust(const Eigen::VectorXd& x, Eigen::VectorXd& d) const {
+    const double active = 1e-9 * gap_;
+    int i = 0;
+    while (knots_ > 0 && i <= knots_ + 1) {
+      // A chain of positions i..last (0 and knots_+1 are the fixed ends) joined by active gaps.
+      int last = i;
+      auto position = [&](int p) { return p == 0 ? 0.0 : p == knots_ + 1 ? knot_scale_ : x[p - 1]; };
+      while (last <= knots_ && position(last + 1) - position(last) - gap_ <= active) ++last;
+      if (last > i) pool_chain(d, i, last);
+      i = last + 1;
+    }
+    for (int w = 0; w < weights_; ++w) {
+      if (x[knots_ + w] - minimum_weight_ <= 1e-12 && d[knots_ + w] < 0) d[knots_ + w] = 0;
+    }
+  }
+
+  std::string fault(const Eigen::VectorXd& x, std::vector<double> knots, std::vector<double> weights) const {
+    unpack(x, knots, weights);
+    NurbsCurve curve;
+    curve.order = order_;
+    curve.knots = std::move(knots);
+    curve.points.assign(count_, Eigen::Vector3d::Zero());
+    curve.weights = std::move(weights);
+    return fit_constraint_fault(curve, gap_ / knot_scale_);
+  }
+
+ private:
+  void pool_chain(Eigen::VectorXd& d, int first, int last) const {
+    struct Block {
+      double sum;
+      int size;
+      bool fixed;  // holds an end of the domain
+      double mean() const { return fixed ? 0.0 : sum / size; }
+    };
+    std::vector<Block> blocks;
+    for (int p = first; p <= last; ++p) {
+      const bool fixed = p == 0 || p == knots_ + 1;
+      blocks.push_back({fixed ? 0.0 : d[p - 1], 1, fixed});
+      while (blocks.size() >= 2 && blocks[blocks.size() - 2].mean() > blocks.back().mean()) {
+        Block top = blocks.back();
+        blocks.pop_back();
+        blocks.back().sum += top.sum;
+        blocks.back().size += top.size;
+        blocks.back().fixed = blocks.back().fixed || top.fixed;
+      }
+    }
+    int p = first;
+    for (const Block& block : blocks) {
+      for (int k = 0; k < block.size; ++k, ++p) {
+        if (p != 0 && p != knots_ + 1) d[p - 1] = block.mean();
+      }
+    }
+  }
+
+  int order_;
+  int count_;
+  int knots_;
+  int weights_;
+  double knot_scale_;  // knots are unknowns in units of the mean span, so that a unit step moves them as much as a weight
+  double gap_;         // in those units
+  double minimum_weight_;
+};
+
+double distance_at(const NurbsCurve& curve, const CurveSamples& samples, size_t j) {
+  return (curve_point(curve, samples.parameters[j]) - samples.points[j]).norm();
+}
+
+// The fit from given starting knots and weights (both feasible): CG over the free ones (unless
+// `minimise` is false: the start's control points only), then the curve and its errors at the samples.
+CurveFit fit_from(const CurveSamples& samples, std::vector<double> knots, std::vector<double> weights,
+                  const CurveFitOptions& options, bool minimise = true) {
+  const int order = options.order;
+  const int count = static_cast<int>(weights.size());
+  CurveFitEnergyTerms terms;
+  terms.fairness = options.fairness;
+  terms.knot_spread = options.optimise_knots ? options.knot_spread : 0.0;
+  terms.weight_pull = options.optimise_weights ? options.weight_pull : 0.0;
+  terms.minimum_gap = options.minimum_knot_gap;
+  const CurveFitEvaluation start =
+      evaluate_curve_fit_energy(samples.parameters, samples.points, order, knots, weights, terms, false);
+  terms.scale = start.data_energy + start.fairness_energy;
+
+  const FitVariables variables(order, count, options);
+  CurveFit fit;
+  Eigen::VectorXd x = variables.pack(knots, weights);
+  if (minimise && x.size() > 0) {
+    std::vector<double> trial_knots = knots, trial_weights = weights;
+    const EnergyWithGradient energy = [&](const Eigen::VectorXd& at, Eigen::VectorXd* gradient) {
+      variables.unpack(at, trial_knots, trial_weights);
+      const CurveFitEvaluation e = evaluate_curve_fit_energy(samples.parameters, samples.points, order, trial_knots,
+                                                             trial_weights, terms, gradient != nullptr);
+      if (gradient && std::isfinite(e.energy)) *gradient = variables.pack_gradient(e);
+      return e.energy;
+    };
+    FeasibilityHooks hooks;
+    hooks.max_step = [&](const Eigen::VectorXd& at, const Eigen::VectorXd& d) { return variables.max_step(at, d); };
+    hooks.adjust_direction = [&](const Eigen::VectorXd& at, Eigen::VectorXd& d) { variables.adjust(at, d); };
+    hooks.on_iterate = [&](const Eigen::VectorXd& at) {
+      // Debug builds check the hard constraints on every accepted iterate (the requirement).
+      assert(variables.fault(at, knots, weights).empty());
+      (void)at;
+    };
+    PolakRibiereOptions cg;
+    cg.max_iterations = options.max_iterations;
+    const PolakRibiereResult result = minimise_polak_ribiere(energy, x, hooks, cg);
+    variables.unpack(result.x, knots, weights);
+    fit.iterations = result.iterations;
+  }
+  const CurveFitEvaluation final_state =
+      evaluate_curve_fit_energy(samples.parameters, samples.points, order, knots, weights, terms, false);
+  if (!std::isfinite(final_state.energy)) refuse("fit_curve", "the samples do not determine the control points");
+  fit.curve.dimension = 3;
+  fit.curve.order = order;
+  fit.curve.knots = std::move(knots);
+  fit.curve.points = final_state.control_points;
+  if (options.optimise_weights) fit.curve.weights = std::move(weights);
+  double sum = 0;
+  for (size_t j = 0; j < samples.parameters.size(); ++j) {
+    const double distance = distance_at(fit.curve, samples, j);
+    fit.max_error = std::max(fit.max_error, distance);
+    sum += distance * distance;
+  }
+  fit.rms_error = std::sqrt(sum / samples.parameters.size());
+  return fit;
+}
+
+std::vector<double> initial_knots(const CurveSamples& samples, int count, const CurveFitOptions& options,
+                                  const std::string& function) {
+  const int spans = count - options.order + 1;
+  if (spans * options.minimum_knot_gap >= 1) {
+    refuse(function, std::to_string(spans) + " spans do not fit in [0, 1] at the minimum knot gap " +
+                         number(options.minimum_knot_gap));
+  }
+  std::vector<double> knots = options.initial_knots == InitialKnots::uniform
+                                  ? clamped_uniform_knots(options.order, count)
+                                  : averaged_knots(samples.parameters, options.order, count);
+  keep_gaps(knots, options.order, count, options.minimum_knot_gap);
+  return knots;
+}
+
+}  // namespace
+
+std::string fit_constraint_fault(const NurbsCurve& curve, double minimum_gap) {
+  const int order = curve.order;
+  const int count = curve.count();
+  if (static_cast<int>(curve.knots.size()) != count + order) return "the knot vector has the wrong length";
+  for (int i = 0; i < order; ++i) {
+    if (curve.knots[i] != 0.0) return "knot " + std::to_string(i) + " is not 0 (the start is not clamped at 0)";
+    if (curve.knots[count + i] != 1.0) return "knot " + std::to_string(count + i) + " is not 1 (the end is not clamped at 1)";
+  }
+  for (int i = order - 1; i < count; ++i) {
+    const double gap = curve.knots[i + 1] - curve.knots[i];
+    if (!(gap >= minimum_gap * (1 - 1e-9))) {
+      return "knots " + std::to_string(i) + " and " + std::to_string(i + 1) + " are " + number(gap) +
+             " apart, less than the minimum gap " + number(minimum_gap);
+    }
+  }
+  for (size_t i = 0; i < curve.weights.size(); ++i) {
+    if (!(curve.weights[i] > 0) || !std::isfinite(curve.weights[i])) return "weight " + std::to_string(i) + " is not > 0";
+  }
+  return {};
+}
+
+CurveFit fit_curve(const CurveSamples& samples, int control_points, const CurveFitOptions& options) {
+  const std::string function = "fit_curve";
+  check_samples(samples, function);
+  check_order(options, function);
+  const int distinct = distinct_parameter_count(samples.parameters);
+  if (control_points < options.order) {
+    refuse(function, std::to_string(control_points) + " control points are fewer than the order " +
+                         std::to_string(options.order));
+  }
+  if (control_points > distinct) {
+    refuse(function, std::to_string(control_points) + " control points need at least as many distinct sample parameters (" +
+                         std::to_string(distinct) + ")");
+  }
+  return fit_from(samples, initial_knots(samples, control_points, options, function),
+                  std::vector<double>(control_points, 1.0), options);
+}
+
+CurveFit fit_curve_within(const CurveSamples& samples, double tolerance, const CurveFitOptions& options) {
+  const std::string function = "fit_curve_within";
+  check_samples(samples, function);
+  check_order(options, function);
+  if (!(tolerance > 0)) refuse(function, "the tolerance must be > 0");
+  const int distinct = distinct_parameter_count(samples.parameters);
+  if (distinct < options.order) {
+    refuse(function, std::to_string(distinct) + " distinct sample parameters cannot fix a curve of order " +
+                         std::to_string(options.order));
+  }
+  const int start_count = std::min(options.order + 1, distinct);
+  std::vector<double> knots = initial_knots(samples, start_count, options, function);
+  std::vector<double> weights(start_count, 1.0);
+  int iterations = 0;
+  for (int round = 0;; ++round) {
+    // The refined start already within tolerance ends the refinement (the minimisation lowers the mean
+    // squared error, not always the largest one); otherwise the minimised fit is judged.
+    CurveFit fit = fit_from(samples, knots, weights, options, false);
+    if (fit.max_error > tolerance) fit = fit_from(samples, knots, weights, options);
+    iterations += fit.iterations;
+    fit.iterations = iterations;
+    fit.refinements = round;
+    if (fit.max_error <= tolerance) return fit;
+
+    // Knots at the middle of every span holding a sample beyond the tolerance (seed 002: refine only
+    // where the fit fails, so the rest of the curve keeps its few control points).
+    const NurbsCurve& curve = fit.curve;
+    std::vector<double> inserted;
+    for (size_t j = 0; j < samples.parameters.size(); ++j) {
+      if (distance_at(curve, samples, j) <= tolerance) continue;
+      const int span = find_knot_span(curve.knots, curve.order, curve.count(), samples.parameters[j]);
+      const double start = curve.knots[span], end = curve.knots[span + 1];
+      const double middle = 0.5 * (start + end);
+      if (!inserted.empty() && inserted.back() == middle) continue;
+      if (0.5 * (end - start) < options.minimum_knot_gap) {
+        refuse(function, "the data cannot be met within " + number(tolerance) + ": the span [" + number(start) +
+                             ", " + number(end) + "] still misses a sample by " +
+                             number(distance_at(curve, samples, j)) + " and is too short to split at the minimum knot gap " +
+                             number(options.minimum_knot_gap));
+      }
+      inserted.push_back(middle);
+    }
+    const int needed = curve.count() + static_cast<int>(inserted.size());
+    if (needed > distinct && curve.count() < distinct) {
+      // The last resort before refusing: as many control points as distinct parameters, which meets
+      // the samples whenever the averaged knots let the spline interpolate them.
+      CurveFit last = fit_curve(samples, distinct, options);
+      last.iterations += iterations;
+      last.refinements = round + 1;
+      if (last.max_error <= tolerance) return last;
+    }
+    if (needed > distinct) {
+      refuse(function, "the data cannot be met within " + number(tolerance) + ": the refinement would need " +
+                           std::to_string(needed) + " control points, more than the " + std::to_string(distinct) +
+                           " distinct sample parameters (max error still " + number(fit.max_error) + ")");
+    }
+    const NurbsCurve refined = refine_knots(curve, inserted);
+    knots = refined.knots;
+    weights = refined.is_rational() ? refined.weights : std::vector<double>(refined.count(), 1.0);
+  }
+}
+
+}  // namespace cadnurbs
