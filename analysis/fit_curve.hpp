@@ -32,7 +32,7 @@ struct CurveFitOptions {
   bool optimise_knots = true;              // false: the initial knots, control points (and weights) only
   bool optimise_weights = true;            // false: polynomial (all weights 1)
   double minimum_knot_gap = 1e-4;          // relative to the domain [0, 1]
-  int max_iterations = 100;                // conjugate-gradient iterations per fit
+  int max_iterations = 40;                 // conjugate-gradient iterations per fit
   InitialKnots initial_knots = InitialKnots::averaged;
   double knot_spread = 1e-3;               // the small term keeping knots apart (relative to the start's energy)
   double weight_pull = 1e-3;               // the small term keeping weights near 1 (same unit)
