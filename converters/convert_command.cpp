@@ -1,4 +1,5 @@
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
@@ -35,6 +36,12 @@ std::string help() {
          "                      with which viewers that tessellate uniformly (X_ITE, view3dscene) draw\n"
          "                      every face within D (default: as --deviation; 0: none written)\n"
          "  --steps N           instead: uniform tessellation, N steps per knot span (seed 000's method)\n"
+         "  --simplify D        NURBS output: remove the knots that faces and 3D curves do not need within\n"
+         "                      D/8 (knot removal; trims kept, so shared edges part by at most D/4, what\n"
+         "                      sewing bridges at D); then the deviation is measured (the original faces\n"
+         "                      meshed within D/4 against the simplified ones) and the meshes at D compared\n"
+         "                      for open edges (an edge opened: redone within D/64, then D/512, else none\n"
+         "                      removed); fails when the deviation exceeds D\n"
          "  --exact-nurbs       every face as the trimmed NURBS of its source, orders, knots, weights and\n"
          "                      control points unchanged (only DEF/USE sharing applies)\n"
          "  --units U           output lengths in U: mm (default), cm, m, in, kicad (0.1 inch, the unit\n"
@@ -84,11 +91,38 @@ int drop_curves(SceneNode& node) {
   return dropped;
 }
 
+// --simplify D: the simplified scene, its one-line summary printed; throws FileError naming `in` when the
+// certified deviation exceeds D. (An opened edge never gets here: simplified_scene then keeps the input.)
+Scene simplify_certified(const std::string& in, const std::string& out, const Scene& scene, double d, int precision) {
+  SimplifiedScene s = simplified_scene(scene, d, written_tolerance(scene, precision));
+  const auto number = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", x);
+    return std::string(text);
+  };
+  const std::string unit = " " + scene.unit.name;
+  const auto open = [&](const EdgeCounts& e) {
+    return std::to_string(e.boundary) + " open edges (" + number(e.boundary_length) + unit + ")";
+  };
+  std::cout << out << ": simplified within " << number(d) << unit << " (faces moved by at most " << number(s.max_move)
+            << ", " << s.attempts << (s.attempts == 1 ? " attempt" : " attempts") << "): " << s.knots.knots_removed << " knots removed ("
+            << s.knots.surfaces_changed << " surfaces, " << s.knots.curves_changed << " curves), control points "
+            << s.knots.control_points_before << " -> " << s.knots.control_points_after << ", certified deviation "
+            << number(s.certified_deviation) << unit << " (measured " << number(s.measured) << " + mesh "
+            << number(s.mesh_deviation) << "; curves " << number(s.knots.curve_deviation) << "), meshed at "
+            << number(d) << ": " << open(s.open_before) << " before, " << open(s.open_after) << " after, "
+            << s.unshared_after << " unshared edge uses\n";
+  if (s.certified_deviation > d)
+    throw FileError(in + ": --simplify " + number(d) + ": the certified deviation " + number(s.certified_deviation) +
+                    " exceeds it");
+  return std::move(s.scene);
+}
+
 }  // namespace
 
 int run_convert(const std::vector<std::string>& args) {
   const Arguments a = parse_arguments("convert", args, {"output", "steps", "precision", "deviation", "display-deviation", "units", "compress",
-                                       "time-limit", "memory-limit", "from"},
+                                       "time-limit", "memory-limit", "from", "simplify"},
                                       {"mesh", "euclidean", "self-contained", "exact-nurbs", "pretty", "check-areas", "help"});
   if (a.has("help")) {
     std::cout << help();
@@ -105,6 +139,8 @@ int run_convert(const std::vector<std::string>& args) {
   if (a.has("deviation") && a.has("steps")) throw UsageError("--deviation and --steps exclude each other");
   const double display_deviation = a.number("display-deviation", -1.0);
   if (a.has("display-deviation") && !(display_deviation >= 0)) throw UsageError("--display-deviation must be 0 or more");
+  const double simplify = a.number("simplify", 0.0);
+  if (a.has("simplify") && !(simplify > 0 && std::isfinite(simplify))) throw UsageError("--simplify must be positive");
   const int precision = a.integer("precision", 0);
   if (a.has("precision") && (precision < 1 || precision > 17)) throw UsageError("--precision must be 1 to 17");
   std::optional<LengthUnit> unit;
@@ -143,6 +179,9 @@ int run_convert(const std::vector<std::string>& args) {
   const bool nurbs_within_deviation = format.quantises && !format.meshes_only;
   const bool mesh = a.has("mesh") || a.has("steps") || (a.has("deviation") && !nurbs_within_deviation) ||
                     format.meshes_only;
+  if (a.has("simplify") && mesh) throw UsageError("--simplify applies to NURBS output only");
+  const Scene simpler = a.has("simplify") ? simplify_certified(in, out, scene, simplify, precision) : Scene{};
+  const Scene& source = a.has("simplify") ? simpler : scene;
   if (nurbs_within_deviation) options.quantisation_budget = deviation > 0 ? deviation : default_deviation(diagonal, in);
   Scene written;
   std::string how;
@@ -176,10 +215,10 @@ int run_convert(const std::vector<std::string>& args) {
                        : std::string());
   } else if (format.compact && !a.has("exact-nurbs")) {
     CompactReport report;
-    written = compact_scene(scene, written_tolerance(scene, precision), &report);
+    written = compact_scene(source, written_tolerance(scene, precision), &report);
     print_compaction(out, report);
   } else {
-    written = scene;
+    written = source;
   }
   if (format.meshes_only) {
     const int curves = drop_curves(written.root);

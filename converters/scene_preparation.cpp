@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
+#include "analysis/measure_deviation.hpp"
+#include "analysis/scene_triangles.hpp"
+#include "analysis/weld_exact.hpp"
 #include "core/bounding_box.hpp"
 #include "formats/common/file_io.hpp"
 
@@ -64,6 +68,86 @@ CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, 
   result.meshes =
       tessellate_to_deviation(result.sewn ? result.faces : scene, max_deviation, &result.report, check_face_areas);
   return result;
+}
+
+namespace {
+
+// The node tree with the trimmed surfaces only (what measure_deviation compares; fallen-back meshes
+// are no face of either side).
+SceneNode surfaces_only(const SceneNode& node) {
+  SceneNode out = node;
+  std::erase_if(out.shapes, [](const Shape& s) { return !std::holds_alternative<TrimmedSurface>(s.geometry); });
+  for (auto& child : out.children) child = surfaces_only(child);
+  return out;
+}
+
+void forget_edges(SceneNode& node) {
+  for (auto& shape : node.shapes)
+    if (auto* t = std::get_if<TrimmedSurface>(&shape.geometry))
+      for (auto& loop : t->loops) loop.edges.clear();
+  for (auto& child : node.children) forget_edges(child);
+}
+
+EdgeCounts sewn_open_edges(const Scene& scene, double diagonal, double deviation, double written_tolerance,
+                           int& unshared) {
+  Scene written = compact_scene(scene, written_tolerance);
+  forget_edges(written.root);
+  const Scene sewn = sew_faces(written, sewing_tolerance(diagonal, deviation));
+  TessellationReport report;
+  const TriangleMesh mesh = weld_exact(scene_triangles(tessellate_to_deviation(sewn, deviation, &report)));
+  unshared = report.unshared_edge_uses;
+  return count_boundary_edges(mesh);
+}
+
+}  // namespace
+
+bool SimplifiedScene::watertight_kept() const {
+  const bool closed_stays_closed = open_before.boundary > 0 || open_after.boundary == 0;
+  const bool no_crack = open_after.boundary_length <= 1.01 * open_before.boundary_length + max_deviation;
+  return unshared_after <= unshared_before && open_after.non_manifold <= open_before.non_manifold &&
+         closed_stays_closed && no_crack;
+}
+
+SimplifiedScene simplified_scene(const Scene& scene, double max_deviation, double written_tolerance) {
+  if (!(max_deviation > 0) || !std::isfinite(max_deviation))
+    throw std::invalid_argument("simplified_scene: the deviation must be a positive number");
+  SimplifiedScene out;
+  out.max_deviation = max_deviation;
+  const double diagonal = scene_bounding_box(scene).diagonal().norm();
+  out.open_before = sewn_open_edges(scene, diagonal, max_deviation, written_tolerance, out.unshared_before);
+  out.open_after = out.open_before;
+  out.unshared_after = out.unshared_before;
+  for (double move = kSimplifyShare * max_deviation; out.attempts < kSimplifyAttempts; move /= 8) {
+    ++out.attempts;
+    out.max_move = move;
+    out.scene = simplify_scene(scene, move, &out.knots);
+    if (out.knots.knots_removed == 0) break;
+    out.open_after = sewn_open_edges(out.scene, diagonal, max_deviation, written_tolerance, out.unshared_after);
+    if (out.watertight_kept()) break;
+  }
+  if (out.knots.knots_removed > 0 && !out.watertight_kept()) {  // no move small enough kept the edges sewn
+    const long points = out.knots.control_points_before;
+    out.knots = SimplifyReport{};
+    out.knots.control_points_before = out.knots.control_points_after = points;
+  }
+  if (out.knots.knots_removed == 0) {  // nothing moved: the input as it is, its mesh the same
+    out.scene = scene;
+    out.max_move = 0;
+    out.open_after = out.open_before;
+    out.unshared_after = out.unshared_before;
+    return out;
+  }
+  Scene before = scene, after = out.scene;
+  before.root = surfaces_only(scene.root);
+  after.root = surfaces_only(out.scene.root);
+  if (out.knots.surfaces_changed > 0) {
+    TessellationReport report;
+    const TriangleMesh mesh = scene_triangles(tessellate_to_deviation(before, 0.25 * max_deviation, &report));
+    out.mesh_deviation = report.certified_deviation;
+    out.measured = measure_deviation(mesh, after).overall.max;
+  }
+  out.certified_deviation = std::max(out.measured + out.mesh_deviation, out.knots.curve_deviation);
+  return out;
 }
 
 }  // namespace cadnurbs

@@ -3,7 +3,9 @@
 // exactly what convert writes: the compact NURBS form, and the certified mesh (sewn first when the file
 // named no edges).
 #include "analysis/compact_scene.hpp"
+#include "analysis/count_boundary_edges.hpp"
 #include "analysis/sew_faces.hpp"
+#include "analysis/simplify_scene.hpp"
 #include "analysis/tessellate_to_deviation.hpp"
 #include "formats/brep/brep_translation.hpp"
 
@@ -44,5 +46,40 @@ struct CertifiedMesh {
 // (sew_faces at sewing_tolerance(diagonal, D)), so that its mesh is as watertight as the B-rep's.
 CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, double max_deviation,
                              bool check_face_areas = false);
+
+// convert --simplify D: the scene with knots removed (simplify_scene) and what certifies it.
+//  - Every face and 3D curve moves by at most D/8 (kSimplifyShare), so that two faces along a shared
+//    edge part by at most D/4: the widest gap sewing bridges for a mesh at D (sewing_tolerance). Sewing
+//    cuts a piece at a neighbour's vertex (a T-junction) only within its first tolerance, 1e-5 of the
+//    diagonal, and a file's own gaps add to the parting; so when the mesh at D of the simplified scene
+//    has lost watertightness (below), the move is divided by 8 and the removal redone, up to
+//    kSimplifyAttempts moves (D/8, D/64, D/512); if none keeps it, the scene is returned unchanged.
+//  - The deviation: the original faces meshed within D/4 (tessellate_to_deviation), measured against
+//    the simplified faces (measure_deviation, two-sided); simplified and original then lie within
+//    measured + that mesh's certified deviation of each other. 3D curves: sampled at equal parameters.
+//  - Watertightness, before and after alike: the compact form (compact_scene at `written_tolerance`)
+//    with its edge ids forgotten, as a reader of the written file finds it, sewn (sew_faces at
+//    sewing_tolerance(diagonal, D)), meshed at D and welded (weld_exact); its open edges counted.
+struct SimplifiedScene {
+  Scene scene;
+  double max_deviation = 0;        // D
+  SimplifyReport knots;
+  int attempts = 0;                // moves tried
+  double max_move = 0;             // the move allowed (D/8, D/64 or D/512); 0: the scene is unchanged
+  double measured = 0;             // measure_deviation's overall maximum (faces)
+  double mesh_deviation = 0;       // certified deviation of the original's mesh it was measured on
+  double certified_deviation = 0;  // max(measured + mesh_deviation, knots.curve_deviation)
+  EdgeCounts open_before, open_after;
+  int unshared_before = 0, unshared_after = 0;  // edge uses the tessellator could not share
+  // No edge use lost its edge and no non-manifold edge appeared; a closed mesh stayed closed, and an
+  // open one's boundary grew by at most 1 % of its length plus D (a crack adds twice its length; the
+  // sampling of an open boundary, and slivers far below D, may change its length a little).
+  bool watertight_kept() const;
+};
+constexpr double kSimplifyShare = 0.125;
+constexpr int kSimplifyAttempts = 3;
+
+// Refuses (std::invalid_argument) a max_deviation that is not a positive number.
+SimplifiedScene simplified_scene(const Scene& scene, double max_deviation, double written_tolerance);
 
 }  // namespace cadnurbs
