@@ -14,5 +14,6 @@ int run_report(const std::vector<std::string>& args);
 int run_normals(const std::vector<std::string>& args);
 int run_fit_loop(const std::vector<std::string>& args);
 int run_batch(const std::vector<std::string>& args);
+int run_fit_path(const std::vector<std::string>& args);
 
 }  // namespace cadnurbs

@@ -166,15 +166,30 @@ void write_as_vrml(const std::string& path, const Scene& scene, const SceneWrite
   vrml.display_deviation = options.display_deviation;
   vrml.tessellation_hints = &tessellation_hints;
   write_vrml(path, scene, vrml);
-  if (encoding == VrmlEncoding::vrml97 && !options.self_contained) {
-    // The EXTERNPROTO URLs name this file beside the output; write it unless it is already there.
-    const auto library = std::filesystem::path(path).parent_path() / vrml.protos_url;
-    if (!std::filesystem::exists(library) || read_file(library.string()) != nurbs_protos_library())
-      write_file_atomically(library.string(), nurbs_protos_library());
-  }
+  if (encoding == VrmlEncoding::vrml97 && !options.self_contained) write_nurbs_protos_beside(path, vrml.protos_url);
 }
 
 }  // namespace
+
+void write_nurbs_protos_beside(const std::string& path, const std::string& protos_url) {
+  // The EXTERNPROTO URLs name this file beside the output.
+  const auto library = std::filesystem::path(path).parent_path() / protos_url;
+  if (!std::filesystem::exists(library) || read_file(library.string()) != nurbs_protos_library())
+    write_file_atomically(library.string(), nurbs_protos_library());
+}
+
+std::optional<VrmlTextForm> vrml_text_form(const FileFormat& format) {
+  using E = VrmlEncoding;
+  for (const auto& [write, form] : std::initializer_list<std::pair<decltype(FileFormat::write), VrmlTextForm>>{
+           {write_as_vrml<E::vrml97, false>, {E::vrml97, false}},
+           {write_as_vrml<E::vrml97, true>, {E::vrml97, true}},
+           {write_as_vrml<E::x3d_classic, false>, {E::x3d_classic, false}},
+           {write_as_vrml<E::x3d_classic, true>, {E::x3d_classic, true}},
+           {write_as_vrml<E::x3d_xml, false>, {E::x3d_xml, false}},
+           {write_as_vrml<E::x3d_xml, true>, {E::x3d_xml, true}}})
+    if (format.write == write) return form;
+  return std::nullopt;
+}
 
 const std::vector<FileFormat>& file_formats() {
   using E = VrmlEncoding;

@@ -43,6 +43,18 @@ struct FileFormat {
 // Every format, inputs and outputs.
 const std::vector<FileFormat>& file_formats();
 
+// The text encoding of a VRML/X3D format of the table and whether it is the gzip'd form; nullopt for
+// the other formats. For commands that rewrite VRML/X3D text themselves (fit-path).
+struct VrmlTextForm {
+  VrmlEncoding encoding;
+  bool gzipped;
+};
+std::optional<VrmlTextForm> vrml_text_form(const FileFormat& format);
+
+// For a VRML97 file at `path` that declares NURBS nodes by EXTERNPROTO: writes the PROTO library beside
+// it (as `protos_url`) unless the same library is already there.
+void write_nurbs_protos_beside(const std::string& path, const std::string& protos_url);
+
 // The format whose extension ends `path` (case-insensitive; the longest match wins, so ".wrl.gz" beats
 // ".gz"), or null.
 const FileFormat* format_of(const std::string& path);

@@ -18,6 +18,7 @@ const char* kUsage =
     "  report  IN... [--deviation D] [--format md|json|csv|html] [-o FILE] [--files DIR] [--records DIR] [--curve]\n"
     "  normals IN.stl -o OUT [--crease-angle DEG] [--weld TOL]\n"
     "  fit-loop IN.stl -o CONTROL.obj [--surface LIMIT] [--control-vertices N] [--tolerance D] [--crease-angle DEG]\n"
+    "  fit-path IN -o OUT --deviation D\n"
     "  batch   IN_DIR -o OUT_DIR [--jobs N] [--to EXT,...] [--deviation D] [--timeout S] [--memory MB] [--shard K/N]\n"
     "  batch   --merge OUT_DIR\n"
     "  demo    [-o DIR]\n"
@@ -28,7 +29,8 @@ const char* kUsage =
 int main(int argc, char** argv) {
   using namespace cadnurbs;
   const std::map<std::string, int (*)(const std::vector<std::string>&)> commands = {
-      {"convert", run_convert}, {"info", run_info}, {"capping", run_capping}, {"demo", run_demo}, {"report", run_report}, {"normals", run_normals}, {"fit-loop", run_fit_loop}, {"batch", run_batch}};
+      {"convert", run_convert}, {"info", run_info}, {"capping", run_capping}, {"demo", run_demo}, {"report", run_report}, {"normals", run_normals}, {"fit-loop", run_fit_loop}, {"batch", run_batch},
+      {"fit-path", run_fit_path}};
   if (argc < 2) {
     std::cerr << kUsage;
     return 2;

@@ -49,7 +49,9 @@ ClassicToken ClassicTokenizer::scan() {
   }
   ClassicToken token;
   token.line = line_;
+  token.begin = token.end = position_;
   if (position_ >= text_.size()) return token;
+  token.end = position_ + 1;
   const char c = text_[position_];
   switch (c) {
     case '[': token.kind = Kind::open_bracket; ++position_; return token;
@@ -73,12 +75,14 @@ ClassicToken ClassicTokenizer::scan() {
       if (s == '\n') ++line_;
       token.text.push_back(s);
     }
+    token.end = position_;
     return token;
   }
   const size_t start = position_;
   while (position_ < text_.size() && !ends_word(text_[position_])) ++position_;
   if (position_ == start) ++position_;  // a lone stray character (quote, backslash) becomes a word
   token.text = std::string(text_.substr(start, position_ - start));
+  token.end = position_;
   const bool numeric = (c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.';
   token.kind = numeric ? Kind::number : Kind::word;
   return token;

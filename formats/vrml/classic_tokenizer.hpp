@@ -11,6 +11,7 @@ struct ClassicToken {
   Kind kind = Kind::end;
   std::string text;  // a string's text is unescaped
   int line = 0;
+  size_t begin = 0, end = 0;  // the token's bytes in the text, [begin, end): for rewriting a text in place
 };
 
 class ClassicTokenizer {

@@ -143,6 +143,7 @@ class XmlReader {
   XmlElement element() {
     XmlElement e;
     e.line = line_;
+    e.begin = position_;
     // Recursion guard: far deeper than any real scene, far shallower than the stack.
     if (++depth_ > 1000) fail("elements nested deeper than 1000 levels");
     advance(1);  // '<'
@@ -152,6 +153,7 @@ class XmlReader {
       if (position_ >= text_.size()) fail("element <" + e.name + "> is not terminated", e.line);
       if (at("/>")) {
         advance(2);
+        e.end = position_;
         --depth_;
         return e;
       }
@@ -188,6 +190,7 @@ class XmlReader {
         skip_space();
         if (!at(">")) fail("expected '>' after </" + closing);
         advance(1);
+        e.end = position_;
         --depth_;
         return e;
       }

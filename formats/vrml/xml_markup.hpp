@@ -18,6 +18,7 @@ struct XmlElement {
   std::vector<XmlAttribute> attributes;
   std::vector<XmlElement> children;
   int line = 0;
+  size_t begin = 0, end = 0;  // the element's bytes in the text, from '<' to past its closing '>'
 
   // The attribute called `n`, or null.
   const XmlAttribute* attribute(const std::string& n) const;

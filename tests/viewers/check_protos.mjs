@@ -48,6 +48,11 @@ const expected = {
     'field MFFloat weight []', 'field SFInt32 tessellation 0',
   ],
   Polyline2D: ['field MFVec2f point []'],
+  NurbsPositionInterpolator: [
+    'eventIn SFFloat set_fraction', 'field SFInt32 dimension 0', 'field MFFloat knot []',
+    'field SFInt32 order 3', 'field MFVec3f keyValue []', 'field MFFloat keyWeight []',
+    'eventOut SFVec3f value_changed',
+  ],
 };
 
 const lines = text.split('\n');
@@ -355,6 +360,35 @@ function edgeCounts(tris) {
     const odd = [...used.values()].filter((c) => c !== 2).length;
     check(`TrimmedSurface: ${name}: boundary is one closed chain (no T junctions)`, odd === 0 && q.tris.length > 0, `${odd} vertices with an odd boundary`);
   }
+}
+
+// ------------------------------------------------------------------ NurbsPositionInterpolator
+// The path Script evaluated at fractions: a rational quarter circle (keyValue as w*P), and the
+// same fields as X_ITE hands them (getValue()) giving the very same points.
+{
+  const pathScript = scriptOf('NurbsPositionInterpolator');
+  const at = (fields, fractions) => {
+    const env = { ...sandbox, print: () => {}, value_changed: null, ...fields };
+    const names = Object.keys(env);
+    const fn = new Function(...names, 'fractions', pathScript + '\nvar out = [];\n' +
+      'for (var i = 0; i < fractions.length; ++i) { set_fraction(fractions[i]); out.push(value_changed); }\nreturn out;');
+    return fn(...names.map((n) => env[n]), fractions);
+  };
+  const quarter = { order: 3, knot: fl([0, 0, 0, 1, 1, 1]), keyValue: [[1, 0, 0], [W, W, 0], [0, 1, 0]].map(v3), keyWeight: fl([1, W, 1]) };
+  const fractions = [-0.5, 0, 0.1, 0.25, 0.5, 0.75, 0.9, 1, 1.5];
+  const a = at(quarter, fractions);
+  const radial = Math.max(...a.map((p) => Math.abs(Math.hypot(p.x, p.y) - 1)));
+  check('NurbsPositionInterpolator: a rational quarter circle stays on radius 1', radial < 1e-6, `max error ${radial.toExponential(2)}`);
+  check('NurbsPositionInterpolator: fractions clamped to [0, 1], ends at the end points',
+    a[0].x === 1 && a[0].y === 0 && a[1].x === 1 && Math.abs(a[7].y - 1) < 1e-6 && a[8].y === a[7].y);
+  const mid = a[4];
+  check('NurbsPositionInterpolator: fraction 0.5 at 45 degrees', Math.abs(mid.x - mid.y) < 1e-6);
+  const b = at({ order: 3, knot: xiteFields(quarter.knot), keyValue: xiteFields(quarter.keyValue), keyWeight: xiteFields(quarter.keyWeight) }, fractions);
+  check('NurbsPositionInterpolator: X_ITE fast path identical', a.every((p, i) => p.x === b[i].x && p.y === b[i].y && p.z === b[i].z));
+  // a cubic with an interior double knot: fraction 0.5 lands on the control point such a knot pins
+  const cubic = { order: 4, knot: fl([0, 0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1, 1]), keyValue: [[0, 0, 0], [1, 2, 0], [2, 2, 0], [3, 0, 0], [4, 1, 0], [5, 1, 0], [6, 0, 0]].map(v3), keyWeight: [] };
+  const c = at(cubic, [0.5, 1]);
+  check('NurbsPositionInterpolator: a knot repeated degree times pins its control point', c[0].x === 3 && c[0].y === 0 && c[1].x === 6, `${JSON.stringify(c)}`);
 }
 
 // ------------------------------------------------------------------ 4. X_ITE fast paths
