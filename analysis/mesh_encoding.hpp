@@ -62,7 +62,8 @@ struct MeshEncodingFigures {
 // above). Only trimmed NURBS surfaces are encoded (curves are ignored). Throws GeometryError (entity
 // "mesh encoding") for max_deviation <= 0 or fractions outside (0, 1), a scene with mesh or polygon
 // shapes (nothing exact to measure them against) or without surfaces, a tessellation with uncertified
-// triangles, no bits up to 30 within the budget, or a decoded mesh that is not the quantised input;
+// triangles, no bits up to 30 within the budget (once hair-apart corners are welded, see
+// with_hair_apart_corners_welded), or a decoded mesh that is not the quantised input;
 // passes on the tessellator's and codecs' errors.
 std::vector<MeshEncodingFigures> encode_mesh_within(const Scene& scene, double max_deviation,
                                                     const std::vector<MeshCodec>& codecs,
@@ -83,6 +84,13 @@ struct QuantisationChoice {
   double displacement = 0;
 };
 QuantisationChoice coarsest_quantisation(const TriangleMesh& mesh, MeshCodec codec, double budget);
+
+// `mesh` made quantisable when corners a hair apart (a trimming loop that passes a point twice, a seam
+// computed two ways: 1e-14 mm apart in KiCad parts) leave a triangle that collapses at every bit count:
+// then it is welded (weld_vertices) within a hundredth of `budget`, and `moved` gets the largest merge,
+// which bounds how far any triangle moved (a triangle that collapses lies along the edge its neighbour
+// keeps). Otherwise `mesh` comes back unchanged and `moved` is 0.
+TriangleMesh with_hair_apart_corners_welded(const TriangleMesh& mesh, MeshCodec codec, double budget, double* moved);
 
 // Largest distance a vertex of `mesh` moves under `codec`'s quantisation at `bits`.
 double quantisation_displacement(const TriangleMesh& mesh, MeshCodec codec, int bits);

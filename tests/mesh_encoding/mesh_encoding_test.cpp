@@ -66,6 +66,29 @@ TEST(MeshEncoding, Capping90Within1mm) { check_capping(1.0); }
 
 TEST(MeshEncoding, Capping90Within0_1mm) { check_capping(0.1); }
 
+TEST(MeshEncoding, CornersAHairApartAreWeldedSoThatAQuantisationPasses) {
+  // A unit square of two triangles and a sliver between corner D and D', 1e-14 apart (as in KiCad's
+  // Phoenix connectors, where a loop passes one point twice): the sliver collapses at every bit count,
+  // so no quantisation passes until the hair-apart corners are welded; the move is the 1e-14.
+  const TriangleMesh mesh{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 1 + 1e-14, 1e-14}},
+                          {{0, 1, 2}, {0, 2, 3}, {3, 2, 4}},
+                          {}};
+  for (MeshCodec codec : {MeshCodec::draco, MeshCodec::meshopt}) {
+    SCOPED_TRACE(mesh_codec_name(codec));
+    EXPECT_EQ(coarsest_quantisation(mesh, codec, 0.01).bits, 0);
+    double moved = -1;
+    const TriangleMesh welded = with_hair_apart_corners_welded(mesh, codec, 0.01, &moved);
+    EXPECT_EQ(welded.positions.size(), 4u);
+    EXPECT_EQ(welded.triangles.size(), 2u);
+    EXPECT_NEAR(moved, std::sqrt(2.0) * 1e-14, 1e-16);
+    EXPECT_GT(coarsest_quantisation(welded, codec, 0.01).bits, 0);
+    // A mesh with nothing to weld comes back as it was.
+    const TriangleMesh square{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}}, {}};
+    EXPECT_EQ(with_hair_apart_corners_welded(square, codec, 0.01, &moved).positions, square.positions);
+    EXPECT_EQ(moved, 0.0);
+  }
+}
+
 TEST(MeshEncoding, RefusesMeshesAndBadArguments) {
   EXPECT_THROW(encode_mesh_within(capping_90(), 0, MeshCodec::draco), GeometryError);
   MeshEncodingOptions options;
