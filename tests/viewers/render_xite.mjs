@@ -35,14 +35,9 @@
 // /usr/bin/chromium.
 
 import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
-import http from 'node:http';
-import { fileURLToPath } from 'node:url';
-import { createRequire } from 'node:module';
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const require = createRequire(import.meta.url);
+import { XiteSession, defaultProtosDir, oneLine, requireXite } from './xite_page.mjs';
 
 function usage(msg) {
   if (msg) process.stderr.write(`render_xite: ${msg}\n`);
@@ -55,7 +50,7 @@ const opt = {
   width: 400,
   height: 300,
   timeout: 90,
-  protos: path.resolve(here, '../../formats/vrml/protos'),
+  protos: defaultProtosDir,
   chromium: process.env.CHROMIUM || '/usr/bin/chromium',
   ignoreErrors: false,
   background: null, // [r, g, b] in 0..1, or null for white
@@ -93,150 +88,32 @@ const outFile = path.resolve(positional[1]);
 if (!fs.existsSync(inFile) || !fs.statSync(inFile).isFile()) usage(`no such file: ${positional[0]}`);
 fs.rmSync(outFile, { force: true }); // never leave an old picture behind a failure
 
-let xiteDist;
-try {
-  xiteDist = path.dirname(require.resolve('x_ite/x_ite.min.js'));
-} catch {
-  process.stderr.write(`render_xite: x_ite not installed: run npm ci in ${here}\n`);
-  process.exit(2);
-}
-let chromium;
-try {
-  ({ chromium } = await import('playwright-core'));
-} catch {
-  process.stderr.write(`render_xite: playwright-core not installed: run npm ci in ${here}\n`);
-  process.exit(2);
-}
+const { xiteDist, chromium } = await requireXite('render_xite');
 
-// ---------------------------------------------------------------- static server
-const sceneDir = path.dirname(inFile);
-const mime = {
-  '.html': 'text/html; charset=utf-8',
-  '.js': 'text/javascript; charset=utf-8',
-  '.mjs': 'text/javascript; charset=utf-8',
-  '.css': 'text/css; charset=utf-8',
-  '.json': 'application/json',
-  '.wrl': 'model/vrml',
-  '.x3dv': 'model/x3d+vrml',
-  '.wrz': 'model/vrml',         // gzip'd; X_ITE inflates by content
-  '.x3dvz': 'model/x3d+vrml',
-  '.x3dz': 'model/x3d+xml',
-  '.x3d': 'model/x3d+xml',
-  '.x3dj': 'model/x3d+json',
-  '.gz': 'application/gzip',
-  '.png': 'image/png',
-  '.jpg': 'image/jpeg',
-  '.jpeg': 'image/jpeg',
-  '.gif': 'image/gif',
-  '.svg': 'image/svg+xml',
-  '.woff2': 'font/woff2',
-  '.ttf': 'font/ttf',
-  '.otf': 'font/otf',
-  '.wasm': 'application/wasm',
-};
-
+// ---------------------------------------------------------------- server and page
 const pageColour = opt.background
   ? `rgb(${opt.background.map((v) => Math.round(v * 255)).join(',')})`
   : '#ffffff';
-const page_html = `<!DOCTYPE html>
-<html><head><meta charset="utf-8"><title>render_xite</title>
-<style>
-html, body { margin: 0; padding: 0; background: ${pageColour}; overflow: hidden; }
-x3d-canvas { display: block; width: ${opt.width}px; height: ${opt.height}px; background: ${pageColour}; }
-</style>
-<script src="/x_ite/x_ite.min.js"></script>
-</head><body>
-<x3d-canvas id="canvas" splashScreen="false" notifications="false" contextMenu="false" timings="false"></x3d-canvas>
-</body></html>
-`;
-
-// Resolves a URL path below root; null when it escapes root or is not a file.
-function fileBelow(root, urlPath) {
-  let rel;
-  try { rel = decodeURIComponent(urlPath); } catch { return null; }
-  const full = path.resolve(root, '.' + path.posix.normalize('/' + rel));
-  if (full !== root && !full.startsWith(root + path.sep)) return null;
-  try { return fs.statSync(full).isFile() ? full : null; } catch { return null; }
-}
-
-const served = [];
-const server = http.createServer((req, res) => {
-  const url = new URL(req.url, 'http://127.0.0.1');
-  let file = null;
-  if (url.pathname === '/' || url.pathname === '/index.html') {
-    res.writeHead(200, { 'Content-Type': mime['.html'], 'Cache-Control': 'no-store' });
-    res.end(page_html);
-    return;
-  }
-  if (url.pathname === '/favicon.ico') { res.writeHead(204); res.end(); return; }
-  if (url.pathname.startsWith('/x_ite/')) file = fileBelow(xiteDist, url.pathname.slice('/x_ite'.length));
-  else if (url.pathname.startsWith('/scene/')) {
-    const p = url.pathname.slice('/scene'.length);
-    file = fileBelow(sceneDir, p) ?? (fs.existsSync(opt.protos) ? fileBelow(opt.protos, p) : null);
-  }
-  if (!file) {
-    served.push(`404 ${url.pathname}`);
-    res.writeHead(404, { 'Content-Type': 'text/plain' });
-    res.end('not found');
-    return;
-  }
-  served.push(`200 ${url.pathname}`);
-  res.writeHead(200, { 'Content-Type': mime[path.extname(file).toLowerCase()] ?? 'application/octet-stream', 'Cache-Control': 'no-store' });
-  fs.createReadStream(file).pipe(res);
+const session = new XiteSession({
+  xiteDist, sceneDir: path.dirname(inFile), protos: opt.protos, chromium: opt.chromium,
+  width: opt.width, height: opt.height, colour: pageColour,
 });
-await new Promise((resolve, reject) => { server.once('error', reject); server.listen(0, '127.0.0.1', resolve); });
-const origin = `http://127.0.0.1:${server.address().port}`;
+await session.serve();
 
 // ---------------------------------------------------------------- browser
-const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'render_xite-'));
-const errors = [];
-const warnings = [];
-let context = null;
+const errors = session.errors;
+const warnings = session.warnings;
 let exitCode = 0;
 
 const deadline = setTimeout(() => {
   process.stderr.write(`render_xite: ${positional[0]}: timed out after ${opt.timeout} s${errors.length ? ': ' + errors.join(' | ') : ''}\n`);
-  cleanup().finally(() => process.exit(1));
+  session.close().finally(() => process.exit(1));
 }, opt.timeout * 1000);
 
-async function cleanup() {
-  try { if (context) await context.close(); } catch { /* already gone */ }
-  context = null;
-  server.close();
-  fs.rmSync(userDataDir, { recursive: true, force: true });
-}
-
-const oneLine = (s) => String(s).replace(/\s+/g, ' ').trim().slice(0, 400);
-
 try {
-  context = await chromium.launchPersistentContext(userDataDir, {
-    executablePath: opt.chromium,
-    headless: true,
-    args: [
-      '--headless', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync',
-      '--no-first-run', '--disable-quic',
-    ],
-    viewport: { width: opt.width, height: opt.height },
-    deviceScaleFactor: 1,
-  });
-  const page = context.pages()[0] ?? await context.newPage();
-  page.on('console', (msg) => {
-    const text = oneLine(msg.text());
-    // EXTERNPROTO URL lists start with URNs (urn:web3d:..., urn:inet:blaxxun.com:...),
-    // which a browser cannot fetch: X_ITE logs each failed try (and the bare fetch
-    // TypeError) and goes on with the next URL. A URL that really fails is still
-    // reported by its own "Couldn't load URL 'http...'" error.
-    const benign = /\burn:/.test(text) || text.startsWith('TypeError: Failed to fetch');
-    if (msg.type() === 'error' && !benign) errors.push(text);
-    else if (msg.type() === 'warning' && /Parser error|Unknown (node|proto|field)/i.test(text)) errors.push(text);
-    else if (msg.type() === 'warning') warnings.push(text);
-  });
-  page.on('pageerror', (err) => errors.push(oneLine(`page error: ${err.message}`)));
-  page.on('crash', () => errors.push('page crashed'));
-
-  await page.goto(`${origin}/`, { waitUntil: 'load' });
-  const sceneURL = `${origin}/scene/${encodeURIComponent(path.basename(inFile))}`;
+  await session.launch(chromium);
+  const page = session.page;
+  const sceneURL = session.sceneURL(inFile);
   const loaded = await page.evaluate(async ({ url, sky }) => {
     const canvas = document.getElementById('canvas');
     const X3D = window.X3D;
@@ -290,10 +167,10 @@ try {
 }
 
 clearTimeout(deadline);
-await cleanup();
+await session.close();
 for (const w of warnings.slice(0, 20)) process.stderr.write(`render_xite: warning: ${w}\n`);
 if (errors.length) {
-  const missing = served.filter((s) => s.startsWith('404 ')).map((s) => s.slice(4));
+  const missing = session.missingFiles();
   if (missing.length) errors.push(`not found on the test server: ${missing.join(', ')}`);
   process.stderr.write(`render_xite: ${positional[0]}: ${errors.join(' | ')}\n`);
   exitCode = opt.ignoreErrors && fs.existsSync(outFile) ? 0 : 1;
