@@ -5,59 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <mutex>
-#include <numbers>
 
 #include "analysis/bezier_span_basis.hpp"
+#include "analysis/span_quadrature.hpp"
 
 namespace cadnurbs {
 namespace {
 
 constexpr int kMaxOrder = 16;
-constexpr double kCrowdedSpanInGaps = 4;
-
-struct QuadratureRule {
-  std::vector<double> nodes;    // on [0, 1]
-  std::vector<double> weights;  // summing to 1
-};
-
-// Gauss-Legendre with `count` nodes on [0, 1] (Newton on the Legendre polynomial from the Chebyshev
-// guesses; exact for polynomials up to degree 2 count - 1). Computed once per count.
-const QuadratureRule& gauss_legendre(int count) {
-  static std::mutex mutex;
-  static std::map<int, QuadratureRule> rules;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto found = rules.find(count);
-  if (found != rules.end()) return found->second;
-  QuadratureRule rule;
-  for (int i = 0; i < count; ++i) {
-    double x = std::cos(std::numbers::pi * (i + 0.75) / (count + 0.5));
-    double derivative = 1;
-    for (int step = 0; step < 100; ++step) {
-      double p0 = 1, p1 = x;  // Legendre P_0, P_1; recurrence up to P_count
-      for (int k = 2; k <= count; ++k) {
-        const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      derivative = count * (x * p1 - p0) / (x * x - 1);
-      const double dx = p1 / derivative;
-      x -= dx;
-      if (std::abs(dx) < 1e-16) break;
-    }
-    rule.nodes.push_back(0.5 * (1 - x));
-    rule.weights.push_back(1.0 / ((1 - x * x) * derivative * derivative));  // 2/(...) halved for [0, 1]
-  }
-  return rules.emplace(count, std::move(rule)).first->second;
-}
-
-// Simpson's rule on [0, 1]: it samples the span's ends, where Gauss nodes in a crowd of short spans
-// would miss what happens at the knots (seed 003 §5).
-const QuadratureRule& simpson() {
-  static const QuadratureRule rule{{0.0, 0.5, 1.0}, {1.0 / 6, 4.0 / 6, 1.0 / 6}};
-  return rule;
-}
 
 // Homogeneous points (w·P, w), as Eigen 4-vectors.
 using Vector4 = Eigen::Vector4d;
@@ -153,7 +108,7 @@ CurveFitEvaluation evaluate_curve_fit_energy(const std::vector<double>& paramete
     }
   }
   auto rule_of = [&](const SpanData& span) -> const QuadratureRule& {
-    return span.length <= kCrowdedSpanInGaps * terms.minimum_gap ? simpson() : gauss_legendre(order);
+    return fairness_rule(span.length, terms.minimum_gap, order);
   };
   if (terms.fairness > 0) {
     for (const SpanData& span : spans) {

@@ -8,7 +8,9 @@
 #include <stdexcept>
 
 #include "analysis/curve_fit_energy.hpp"
+#include "analysis/knot_gap_constraints.hpp"
 #include "analysis/polak_ribiere.hpp"
+#include "analysis/refinement_round.hpp"
 #include "core/knot_insertion.hpp"
 #include "core/knot_vector.hpp"
 
@@ -51,34 +53,14 @@ void check_order(const CurveFitOptions& options, const std::string& function) {
   if (!(options.minimum_weight > 0)) refuse(function, "the minimum weight must be > 0");
 }
 
-// Piegl & Tiller (9.69): interior knot j is the mean of the parameters around position j·d,
-// d = samples / (count - degree), so every span gets about the same number of samples.
-std::vector<double> averaged_knots(const std::vector<double>& parameters, int order, int count) {
-  const int degree = order - 1;
-  std::vector<double> knots(count + order, 0.0);
-  std::fill(knots.end() - order, knots.end(), 1.0);
-  const double d = static_cast<double>(parameters.size()) / (count - degree);
-  for (int j = 1; j < count - degree; ++j) {
-    const int i = static_cast<int>(j * d);
-    const double alpha = j * d - i;
-    knots[degree + j] = (1 - alpha) * parameters[i - 1] + alpha * parameters[i];
-  }
-  return knots;
-}
-
-// Pushes interior knots apart to at least `gap` (forward, then backward from the end at 1).
-void keep_gaps(std::vector<double>& knots, int order, int count, double gap) {
-  for (int i = order; i < count; ++i) knots[i] = std::max(knots[i], knots[i - 1] + gap);
-  for (int i = count - 1; i >= order; --i) knots[i] = std::min(knots[i], knots[i + 1] - gap);
-}
-
 // The conjugate-gradient unknowns: the interior knots (when optimised), then the weights (when optimised).
 class FitVariables {
  public:
   FitVariables(int order, int count, const CurveFitOptions& options)
       : order_(order), count_(count), knots_(options.optimise_knots ? count - order : 0),
         weights_(options.optimise_weights ? count : 0), knot_scale_(count - order + 1),
-        gap_(options.minimum_knot_gap * knot_scale_), minimum_weight_(options.minimum_weight) {}
+        gap_(options.minimum_knot_gap * knot_scale_), minimum_weight_(options.minimum_weight),
+        knot_block_{0, knots_, knot_scale_, gap_} {}
 
   Eigen::VectorXd pack(const std::vector<double>& knots, const std::vector<double>& weights) const {
     Eigen::VectorXd x(knots_ + weights_);
@@ -97,15 +79,9 @@ class FitVariables {
     return g;
   }
 
-  // Seed 003 §5.2: the step bound that keeps every gap (the domain's ends included, fixed) at least
-  // `gap_`, min over closing gaps of (u_{i+1} - u_i - gap) / (d_i - d_{i+1}); likewise the weights' floor.
+  // Seed 003 §5.2: the knots' step bound (knot_gap_constraints), and likewise the weights' floor.
   double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& d) const {
-    double bound = std::numeric_limits<double>::infinity();
-    for (int i = 0; i <= knots_ && knots_ > 0; ++i) {
-      const double left = i == 0 ? 0.0 : x[i - 1], right = i == knots_ ? knot_scale_ : x[i];
-      const double d_left = i == 0 ? 0.0 : d[i - 1], d_right = i == knots_ ? 0.0 : d[i];
-      if (d_left - d_right > 0) bound = std::min(bound, std::max(0.0, right - left - gap_) / (d_left - d_right));
-    }
+    double bound = knot_block_.max_step(x, d);
     for (int i = 0; i < weights_; ++i) {
       const double w = x[knots_ + i], dw = d[knots_ + i];
       if (dw < 0) bound = std::min(bound, std::max(0.0, w - minimum_weight_) / -dw);
@@ -113,22 +89,10 @@ class FitVariables {
     return bound;
   }
 
-  // The nearest direction that keeps the active constraints: along each chain of knots at the minimum
-  // gap, the components must not decrease (else the gap closes), which is an isotonic regression, solved
-  // by pooling adjacent violators into their average (seed 003: colliding knots move by their average);
-  // a chain touching an end of the domain is held (the ends are fixed). A weight at its floor keeps no
-  // downward component.
+  // The nearest direction that keeps the active constraints: the knots' chains at the minimum gap
+  // (knot_gap_constraints); a weight at its floor keeps no downward component.
   void adjust(const Eigen::VectorXd& x, Eigen::VectorXd& d) const {
-    const double active = 1e-9 * gap_;
-    int i = 0;
-    while (knots_ > 0 && i <= knots_ + 1) {
-      // A chain of positions i..last (0 and knots_+1 are the fixed ends) joined by active gaps.
-      int last = i;
-      auto position = [&](int p) { return p == 0 ? 0.0 : p == knots_ + 1 ? knot_scale_ : x[p - 1]; };
-      while (last <= knots_ && position(last + 1) - position(last) - gap_ <= active) ++last;
-      if (last > i) pool_chain(d, i, last);
-      i = last + 1;
-    }
+    knot_block_.adjust(x, d);
     for (int w = 0; w < weights_; ++w) {
       if (x[knots_ + w] - minimum_weight_ <= 1e-12 && d[knots_ + w] < 0) d[knots_ + w] = 0;
     }
@@ -145,33 +109,6 @@ class FitVariables {
   }
 
  private:
-  void pool_chain(Eigen::VectorXd& d, int first, int last) const {
-    struct Block {
-      double sum;
-      int size;
-      bool fixed;  // holds an end of the domain
-      double mean() const { return fixed ? 0.0 : sum / size; }
-    };
-    std::vector<Block> blocks;
-    for (int p = first; p <= last; ++p) {
-      const bool fixed = p == 0 || p == knots_ + 1;
-      blocks.push_back({fixed ? 0.0 : d[p - 1], 1, fixed});
-      while (blocks.size() >= 2 && blocks[blocks.size() - 2].mean() > blocks.back().mean()) {
-        Block top = blocks.back();
-        blocks.pop_back();
-        blocks.back().sum += top.sum;
-        blocks.back().size += top.size;
-        blocks.back().fixed = blocks.back().fixed || top.fixed;
-      }
-    }
-    int p = first;
-    for (const Block& block : blocks) {
-      for (int k = 0; k < block.size; ++k, ++p) {
-        if (p != 0 && p != knots_ + 1) d[p - 1] = block.mean();
-      }
-    }
-  }
-
   int order_;
   int count_;
   int knots_;
@@ -179,6 +116,7 @@ class FitVariables {
   double knot_scale_;  // knots are unknowns in units of the mean span, so that a unit step moves them as much as a weight
   double gap_;         // in those units
   double minimum_weight_;
+  KnotGapBlock knot_block_;
 };
 
 double distance_at(const NurbsCurve& curve, const CurveSamples& samples, size_t j) {
@@ -254,7 +192,7 @@ std::vector<double> initial_knots(const CurveSamples& samples, int count, const 
   std::vector<double> knots = options.initial_knots == InitialKnots::uniform
                                   ? clamped_uniform_knots(options.order, count)
                                   : averaged_knots(samples.parameters, options.order, count);
-  keep_gaps(knots, options.order, count, options.minimum_knot_gap);
+  keep_knot_gaps(knots, options.order, count, options.minimum_knot_gap);
   return knots;
 }
 
@@ -313,13 +251,8 @@ CurveFit fit_curve_within(const CurveSamples& samples, double tolerance, const C
   std::vector<double> weights(start_count, 1.0);
   int iterations = 0;
   for (int round = 0;; ++round) {
-    // The refined start already within tolerance ends the refinement (the minimisation lowers the mean
-    // squared error, not always the largest one); otherwise the minimised fit is judged.
-    CurveFit fit = fit_from(samples, knots, weights, options, false);
-    if (fit.max_error > tolerance) fit = fit_from(samples, knots, weights, options);
-    iterations += fit.iterations;
-    fit.iterations = iterations;
-    fit.refinements = round;
+    CurveFit fit = refinement_round(
+        [&](bool minimise) { return fit_from(samples, knots, weights, options, minimise); }, tolerance, round, iterations);
     if (fit.max_error <= tolerance) return fit;
 
     // Knots at the middle of every span holding a sample beyond the tolerance (seed 002: refine only
