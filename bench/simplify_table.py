@@ -112,6 +112,11 @@ def main():
     a = parser.parse_args()
     os.makedirs(a.out, exist_ok=True)
     # A copy of the binary: the build folder's may be relinked by a build while the table runs.
+    # (A binary being linked is not executable yet: wait for the link to end.)
+    for _ in range(60):
+        if os.access(a.cadnurbs, os.X_OK):
+            break
+        time.sleep(5)
     cadnurbs = os.path.join(a.out, "cadnurbs")
     shutil.copy2(a.cadnurbs, cadnurbs)
     files, skipped = corpus_files(a.corpus, a.skip_above)
