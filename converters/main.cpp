@@ -15,7 +15,7 @@ const char* kUsage =
     "                    [--display-deviation D] [--precision N] [--pretty] [--euclidean] [--self-contained]\n"
     "  info    IN [--euclidean]\n"
     "  capping --shape NAME|all -o OUT [--path FILE --profile FILE] [--max-chord-deviation D]\n"
-    "  report  IN... [--deviation D] [--format md|json|csv|html] [-o FILE] [--files DIR] [--records DIR] [--curve]\n"
+    "  report  IN... [--deviation D] [--format md|json|csv|html] [-o FILE] [--files DIR] [--records DIR] [--curve] [--simplify S]\n"
     "  normals IN.stl -o OUT [--crease-angle DEG] [--weld TOL]\n"
     "  fit-loop IN.stl -o CONTROL.obj [--surface LIMIT] [--control-vertices N] [--tolerance D] [--crease-angle DEG]\n"
     "  fit-path IN -o OUT --deviation D\n"

@@ -16,6 +16,9 @@ struct PartMeasurementOptions {
   // temporary folder, removed afterwards.
   std::string files_folder;
   bool curve = false;         // also the storage-against-deviation curve (analysis of several D)
+  // > 0: also the compact X3D NURBS with knots removed within this many millimetres (convert --simplify),
+  // next to the source NURBS, its deviation certified by simplified_scene (converters/scene_preparation).
+  double simplify_mm = 0;
   const FileFormat* format = nullptr;  // the input's format when its name does not say it (batch tells it by content)
 };
 

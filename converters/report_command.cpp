@@ -1,3 +1,4 @@
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -14,7 +15,7 @@ namespace {
 
 const char* kHelp =
     "usage: cadnurbs report IN... [--deviation D] [--format md|json|csv|html] [-o FILE] [--files DIR]\n"
-    "                       [--records DIR] [--curve] [--time-limit S] [--memory-limit MB]\n"
+    "                       [--records DIR] [--curve] [--simplify S] [--time-limit S] [--memory-limit MB]\n"
     "For each part: what NURBS and meshes cost at the same accuracy, in floats (counted as seed 001,\n"
     "6.1 counts them) and in bytes of files actually written and read back (raw and gzip'd), with the\n"
     "deviation of every mesh measured after reading it back.\n"
@@ -25,6 +26,8 @@ const char* kHelp =
     "  --files DIR     keep the written representations in DIR (default: a temporary folder)\n"
     "  --records DIR   also one JSON record per part in DIR (NAME.json)\n"
     "  --curve         also bytes against D, from 1 % of the part's diagonal down to 1e-5 of it\n"
+    "  --simplify S    also the compact X3D NURBS with the knots removed that no face needs within S\n"
+    "                  millimetres (convert --simplify), next to the source NURBS\n"
     "Goes on past a file that fails and lists it with its reason; the exit status is 0 when every\n"
     "part was measured, 3 when some failed.\n";
 
@@ -57,7 +60,7 @@ constexpr int kSomeFailed = 3;
 }  // namespace
 
 int run_report(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("report", args, {"output", "deviation", "format", "files", "records", "time-limit",
+  const Arguments a = parse_arguments("report", args, {"output", "deviation", "format", "files", "records", "simplify", "time-limit",
                                        "memory-limit"},
                                       {"curve", "help"});
   if (a.has("help")) {
@@ -74,6 +77,9 @@ int run_report(const std::vector<std::string>& args) {
   if (!(options.deviation_mm > 0) || !std::isfinite(options.deviation_mm))
     throw UsageError("--deviation must be a positive number of millimetres");
   options.curve = a.has("curve");
+  options.simplify_mm = a.number("simplify", 0.0);
+  if (a.has("simplify") && !(options.simplify_mm > 0 && std::isfinite(options.simplify_mm)))
+    throw UsageError("--simplify must be a positive number of millimetres");
   std::vector<PartRecord> records;
   std::vector<PartViews> views;
   int failed = 0;

@@ -123,6 +123,24 @@ TEST_F(Report, CappingFloatCountsAreThoseOfTheWrittenFiles) {
 }
 
 // Our binary NURBS within D against the smallest meshes within the same D, on every bundled capping.
+TEST_F(Report, SimplifyAddsTheSimplifiedNurbsNextToTheSourceNurbs) {
+  // CAx-IF dm1: B-spline faces with knots their shape does not need (as in the simplify CLI test).
+  const std::string step = std::string(CADNURBS_SHARED_DIR) + "/corpus/step/dm1-id-214.stp";
+  const CommandResult r = run("report " + step + " --deviation 0.15 --simplify 0.15 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json part = Json::parse(r.out)["parts"][0];
+  const Json& simplified = representation(part, "x3dv-simplified");
+  const Json& compact = representation(part, "x3dv-compact");
+  EXPECT_EQ(simplified["label"], "X3D classic NURBS, compact, simplified (--simplify 0.15)");
+  EXPECT_GT(simplified["deviation"].get<double>(), 0.0);  // certified by measuring, not assumed
+  EXPECT_LE(simplified["deviation"].get<double>(), 0.15);
+  EXPECT_LT(simplified["floats"].get<long>(), compact["floats"].get<long>());
+  EXPECT_LT(simplified["bytes"].get<long>(), compact["bytes"].get<long>());
+  const CommandResult usage = run("report " + step + " --simplify 0");
+  EXPECT_EQ(usage.status, 2);
+  EXPECT_EQ(usage.err, "cadnurbs report: --simplify must be a positive number of millimetres\n");
+}
+
 TEST_F(Report, CompactBinaryNurbsIsSmallerThanDracoAndMeshoptOnTheCappings) {
   std::string inputs;
   for (const char* name : {"capping-90", "capping-end", "capping-post", "capping-moulded"})
