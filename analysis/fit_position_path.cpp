@@ -138,6 +138,11 @@ PositionPathFit fit_position_path(const std::vector<double>& keys, const std::ve
     } catch (const std::invalid_argument& e) {  // the data cannot be met with fewer control points
       throw GeometryError(kEntity, e.what());
     }
+    // The ends on the first and last keys exactly, so an animation starts and stops where the original
+    // does: a clamped curve passes through its end points, and moving one moves the curve by at most
+    // that much (the bound below is taken afterwards).
+    fitted.curve.points.front() = values.front();
+    fitted.curve.points.back() = values.back();
     PositionPathFit fit;
     fit.curve = with_constant_ends(fitted.curve, t0, t1);
     fit.max_error = path_error_bound(written(fit.curve), keys, values);

@@ -8,8 +8,9 @@
 //   - has a clamped knot vector on exactly [0, 1], so the fraction is the curve parameter whether a
 //     browser maps the fraction onto the knot domain (X_ITE) or uses it as the parameter directly;
 //   - is fitted between the first and the last key by analysis/fit_curve (automatic knots, local
-//     refinement) to the keys and to the path's points halfway between keys, then joined to constant
-//     pieces on [0, first key] and [last key, 1] when the keys do not span [0, 1];
+//     refinement) to the keys and to the path's points halfway between keys, its end points then set to
+//     the first and last key values (so it starts and stops exactly where the path does), and joined to
+//     constant pieces on [0, first key] and [last key, 1] when the keys do not span [0, 1];
 //   - is measured as `as_written` returns it (the caller's writer rounds its numbers): the error is that
 //     of the curve a reader gets back, not of the one in memory. When that exceeds the deviation, the fit
 //     is redone to a tighter tolerance (at most a few times).

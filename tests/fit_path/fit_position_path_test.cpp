@@ -38,6 +38,8 @@ TEST(FitPositionPath, SmoothPathsFitWithinTheDeviationWithATenthOfTheKeys) {
     EXPECT_LE(fit.max_error, c.deviation) << c.name;
     EXPECT_LE(sampled_path_error(fit.curve, c.path), fit.max_error + 1e-12) << c.name << ": the bound is below a sample";
     EXPECT_LE(fit.curve.count() * 10, static_cast<int>(c.path.keys.size())) << c.name << ": " << fit.curve.count();
+    EXPECT_EQ(curve_point(fit.curve, 0.0), c.path.values.front()) << c.name << ": starts where the path does";
+    EXPECT_EQ(curve_point(fit.curve, 1.0), c.path.values.back()) << c.name << ": ends where the path does";
     std::cout << c.name << ": " << fit.curve.count() << " control points, bound " << fit.max_error << "\n";
   }
 }
