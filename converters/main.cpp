@@ -13,6 +13,7 @@ const char* kUsage =
     "commands:\n"
     "  convert IN -o OUT [--mesh] [--deviation D | --steps N] [--exact-nurbs] [--units U]\n"
     "                    [--display-deviation D] [--precision N] [--pretty] [--euclidean] [--self-contained]\n"
+    "                    [--simplify D]\n"
     "  info    IN [--euclidean]\n"
     "  capping --shape NAME|all -o OUT [--path FILE --profile FILE] [--max-chord-deviation D]\n"
     "  report  IN... [--deviation D] [--format md|json|csv|html] [-o FILE] [--files DIR] [--records DIR] [--curve] [--simplify S]\n"
