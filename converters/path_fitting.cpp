@@ -1,7 +1,7 @@
 #include "converters/path_fitting.hpp"
 
 #include <algorithm>
-#include <map>
+#include <set>
 #include <stdexcept>
 
 #include "analysis/fit_position_path.hpp"
@@ -47,7 +47,7 @@ PathRewrite fit_paths_in_text(const std::string& text, VrmlEncoding encoding, do
 
   PathRewrite rewrite;
   std::vector<Replacement> replacements;
-  std::map<std::string, std::string> converted_defs;  // DEF name -> containerField, for XML USEs
+  std::set<std::string> converted_defs;  // for XML USEs of them
   for (const InterpolatorInText& node : nodes) {
     if (!node.use_name.empty()) continue;
     PathAccount account;
@@ -82,7 +82,7 @@ PathRewrite fit_paths_in_text(const std::string& text, VrmlEncoding encoding, do
           account.order = fit.curve.order;
           account.max_error = fit.max_error;
           account.bytes_after = replacement.size();
-          converted_defs[node.def_name] = node.container_field;
+          converted_defs.insert(node.def_name);
           replacements.push_back({node.begin, node.end, std::move(replacement)});
         }
       } catch (const GeometryError& e) {
