@@ -104,17 +104,21 @@ class Compactor {
 
 }  // namespace
 
+int instance_repeats(SceneNode& node, double tolerance) {
+  const int parts = instance_repeated_parts(node, 0.25 * tolerance);
+  // Faces that become polygons are merged into face sets instead.
+  return parts + instance_repeated_faces(node, 0.25 * tolerance, [&](const Shape& shape) {
+           return !planar_face_polygons(std::get<TrimmedSurface>(shape.geometry), tolerance);
+         });
+}
+
 Scene compact_scene(const Scene& scene, double tolerance, CompactReport* report) {
   if (!(tolerance > 0) || !std::isfinite(tolerance))
     throw std::invalid_argument("compact_scene: the tolerance must be a positive number");
   CompactReport local;
   CompactReport& r = report ? *report : local;
   Scene out = scene;
-  r.instanced += instance_repeated_parts(out.root, 0.25 * tolerance);
-  // Faces that become polygons are merged into face sets instead.
-  r.instanced += instance_repeated_faces(out.root, 0.25 * tolerance, [&](const Shape& shape) {
-    return !planar_face_polygons(std::get<TrimmedSurface>(shape.geometry), tolerance);
-  });
+  r.instanced += instance_repeats(out.root, tolerance);
   Compactor(tolerance, r).node(out.root);
   return out;
 }

@@ -26,6 +26,11 @@ struct CompactReport {
   int instanced = 0;       // repeated parts placed as translated copies of one
 };
 
+// compact_scene's first rewrite alone, in place: repeated parts, then single curved faces that will not
+// become polygons, placed as copies within τ/4 (`tolerance` = τ). Returns the copies placed. Run before
+// anything that changes faces one by one (simplify_scene), so that copies stay exact copies.
+int instance_repeats(SceneNode& node, double tolerance);
+
 // `tolerance` = τ > 0, in the scene's units. Throws std::invalid_argument for τ <= 0 or not finite.
 Scene compact_scene(const Scene& scene, double tolerance, CompactReport* report = nullptr);
 

@@ -3,6 +3,8 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
 #include <stdexcept>
 
 #include "analysis/knot_removal.hpp"
@@ -23,9 +25,40 @@ double placed_distance(const NurbsCurve& a, const NurbsCurve& b, const Eigen::Af
   return worst;
 }
 
+bool same_surface(const NurbsSurface& a, const NurbsSurface& b) {
+  return a.u_order == b.u_order && a.v_order == b.v_order && a.u_count == b.u_count && a.v_count == b.v_count &&
+         a.u_knots == b.u_knots && a.v_knots == b.v_knots && a.weights == b.weights && a.points == b.points;
+}
+
+// Copies of a repeated part hold equal nets under transforms whose stretches differ in the last bits;
+// each kind is simplified once, so that the copies stay equal and are still written once.
+class SimplifiedNets {
+ public:
+  NurbsSurface simplified(const NurbsSurface& net, double tolerance, int* removed) {
+    const auto key = std::make_tuple(net.u_count, net.v_count, net.points.empty() ? 0.0 : net.points[0].x());
+    for (auto [it, end] = done_.equal_range(key); it != end; ++it)
+      if (same_surface(it->second.net, net) && std::abs(it->second.tolerance - tolerance) <= 1e-9 * tolerance) {
+        *removed = it->second.removed;
+        return it->second.result;
+      }
+    Entry entry{net, tolerance, remove_knots(net, tolerance, removed), *removed};
+    return done_.emplace(key, std::move(entry))->second.result;
+  }
+
+ private:
+  struct Entry {
+    NurbsSurface net;
+    double tolerance;
+    NurbsSurface result;
+    int removed;
+  };
+  std::multimap<std::tuple<int, int, double>, Entry> done_;
+};
+
 struct Simplifier {
   double max_move;
   SimplifyReport report;
+  SimplifiedNets nets;
 
   void node(SceneNode& n, const Eigen::Affine3d& parent) {
     const Eigen::Affine3d world = parent * n.transform;
@@ -36,7 +69,7 @@ struct Simplifier {
       int removed = 0;
       if (auto* t = std::get_if<TrimmedSurface>(&shape.geometry)) {
         report.control_points_before += t->surface.points.size();
-        t->surface = remove_knots(t->surface, tolerance, &removed);
+        t->surface = nets.simplified(t->surface, tolerance, &removed);
         report.control_points_after += t->surface.points.size();
         report.surfaces_changed += removed > 0;
       } else if (auto* c = std::get_if<NurbsCurve>(&shape.geometry)) {

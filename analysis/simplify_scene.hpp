@@ -20,7 +20,8 @@ struct SimplifyReport {
 // The scene with every trimmed surface's net and every NurbsCurve (3D) simplified by remove_knots
 // within `max_move` (world units): each shape's tolerance is max_move divided by the largest
 // stretch of its world transform (the operator norm of its linear part), so that the placed shape
-// moves by at most max_move. Meshes and polygon sets pass through. Refuses (std::invalid_argument) a
+// moves by at most max_move. Equal nets whose tolerances agree to 1e-9 (copies of a repeated part) give
+// equal results. Meshes and polygon sets pass through. Refuses (std::invalid_argument) a
 // max_move that is not a positive number.
 Scene simplify_scene(const Scene& scene, double max_move, SimplifyReport* report = nullptr);
 

@@ -105,7 +105,8 @@ Scene simplify_certified(const std::string& in, const std::string& out, const Sc
     return std::to_string(e.boundary) + " open edges (" + number(e.boundary_length) + unit + ")";
   };
   std::cout << out << ": simplified within " << number(d) << unit << " (faces moved by at most " << number(s.max_move)
-            << ", " << s.attempts << (s.attempts == 1 ? " attempt" : " attempts") << "): " << s.knots.knots_removed << " knots removed ("
+            << ", " << s.attempts << (s.attempts == 1 ? " attempt" : " attempts") << "; " << s.instanced
+            << " repeated parts placed as copies first): " << s.knots.knots_removed << " knots removed ("
             << s.knots.surfaces_changed << " surfaces, " << s.knots.curves_changed << " curves), control points "
             << s.knots.control_points_before << " -> " << s.knots.control_points_after << ", certified deviation "
             << number(s.certified_deviation) << unit << " (measured " << number(s.measured) << " + mesh "

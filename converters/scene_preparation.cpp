@@ -117,10 +117,14 @@ SimplifiedScene simplified_scene(const Scene& scene, double max_deviation, doubl
   out.open_before = sewn_open_edges(scene, diagonal, max_deviation, written_tolerance, out.unshared_before);
   out.open_after = out.open_before;
   out.unshared_after = out.unshared_before;
+  // Copies of a repeated part, simplified one by one, would lose different knots (a copy's parameters
+  // may run the other way) and be written apart; placed as exact copies first, they stay equal.
+  Scene instanced = scene;
+  out.instanced = instance_repeats(instanced.root, written_tolerance);
   for (double move = kSimplifyShare * max_deviation; out.attempts < kSimplifyAttempts; move /= 8) {
     ++out.attempts;
     out.max_move = move;
-    out.scene = simplify_scene(scene, move, &out.knots);
+    out.scene = simplify_scene(instanced, move, &out.knots);
     if (out.knots.knots_removed == 0) break;
     out.open_after = sewn_open_edges(out.scene, diagonal, max_deviation, written_tolerance, out.unshared_after);
     if (out.watertight_kept()) break;
@@ -132,6 +136,7 @@ SimplifiedScene simplified_scene(const Scene& scene, double max_deviation, doubl
   }
   if (out.knots.knots_removed == 0) {  // nothing moved: the input as it is, its mesh the same
     out.scene = scene;
+    out.instanced = 0;
     out.max_move = 0;
     out.open_after = out.open_before;
     out.unshared_after = out.unshared_before;

@@ -48,6 +48,8 @@ CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, 
                              bool check_face_areas = false);
 
 // convert --simplify D: the scene with knots removed (simplify_scene) and what certifies it.
+//  - Repeated parts are first placed as exact copies (instance_repeats at `written_tolerance`, as the
+//    compact writer would), so that every copy loses the same knots and is still written once.
 //  - Every face and 3D curve moves by at most D/8 (kSimplifyShare), so that two faces along a shared
 //    edge part by at most D/4: the widest gap sewing bridges for a mesh at D (sewing_tolerance). Sewing
 //    cuts a piece at a neighbour's vertex (a T-junction) only within its first tolerance, 1e-5 of the
@@ -64,6 +66,7 @@ struct SimplifiedScene {
   Scene scene;
   double max_deviation = 0;        // D
   SimplifyReport knots;
+  int instanced = 0;               // copies of repeated parts placed before simplifying (instance_repeats)
   int attempts = 0;                // moves tried
   double max_move = 0;             // the move allowed (D/8, D/64 or D/512); 0: the scene is unchanged
   double measured = 0;             // measure_deviation's overall maximum (faces)
