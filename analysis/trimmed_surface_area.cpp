@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "analysis/span_quadrature.hpp"
 #include "analysis/surface_evaluator.hpp"
 #include "analysis/triangulate_polygon.hpp"
 #include "core/geometry_error.hpp"
@@ -13,12 +14,8 @@ namespace cadnurbs {
 
 namespace {
 
-// 6-point Gauss-Legendre on [0, 1].
-constexpr int kGauss = 6;
-constexpr double kNodes[kGauss] = {0.033765242898423975, 0.16939530676686776, 0.38069040695840156,
-                                   0.61930959304159844, 0.83060469323313224, 0.96623475710157603};
-constexpr double kWeights[kGauss] = {0.085662246189585173, 0.18038078652406930, 0.23395696728634552,
-                                     0.23395696728634552, 0.18038078652406930, 0.085662246189585173};
+// The 6-point Gauss-Legendre rule on [0, 1] (exact to degree 11), in both directions of a cell.
+const QuadratureRule& gauss() { return gauss_legendre(6); }
 
 double density(const SurfaceEvaluator& e, const Eigen::Vector2d& uv) {
   const SurfaceJet j = e.jet(uv.x(), uv.y(), 1);
@@ -29,11 +26,12 @@ double density(const SurfaceEvaluator& e, const Eigen::Vector2d& uv) {
 double triangle_integral(const SurfaceEvaluator& e, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                          const Eigen::Vector2d& c) {
   const double jac = std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+  const QuadratureRule& g = gauss();
   double sum = 0;
-  for (int i = 0; i < kGauss; ++i)
-    for (int k = 0; k < kGauss; ++k) {
-      const double s = kNodes[i], t = kNodes[k];
-      sum += kWeights[i] * kWeights[k] * s * density(e, a + s * (b - a) + s * t * (c - b));
+  for (size_t i = 0; i < g.nodes.size(); ++i)
+    for (size_t k = 0; k < g.nodes.size(); ++k) {
+      const double s = g.nodes[i], t = g.nodes[k];
+      sum += g.weights[i] * g.weights[k] * s * density(e, a + s * (b - a) + s * t * (c - b));
     }
   return sum * jac;
 }
@@ -42,17 +40,18 @@ double triangle_integral(const SurfaceEvaluator& e, const Eigen::Vector2d& a, co
 // x(tau, s) = (1 - s) chord(tau) + s c(t(tau)); positive when the curve lies right of the chord.
 double strip_integral(const SurfaceEvaluator& e, const TrimSegment& seg, double t0, double t1) {
   const Eigen::Vector2d a = segment_uv(seg, t0), b = segment_uv(seg, t1);
+  const QuadratureRule& g = gauss();
   double sum = 0;
-  for (int i = 0; i < kGauss; ++i) {
-    const double tau = kNodes[i], t = t0 + tau * (t1 - t0);
+  for (size_t i = 0; i < g.nodes.size(); ++i) {
+    const double tau = g.nodes[i], t = t0 + tau * (t1 - t0);
     const Eigen::Vector2d chord = a + tau * (b - a), curve = segment_uv(seg, t);
     const Eigen::Vector2d dcurve = segment_tangent(seg, t) * (t1 - t0);
-    for (int k = 0; k < kGauss; ++k) {
-      const double s = kNodes[k];
+    for (size_t k = 0; k < g.nodes.size(); ++k) {
+      const double s = g.nodes[k];
       const Eigen::Vector2d x = (1 - s) * chord + s * curve;
       const Eigen::Vector2d dtau = (1 - s) * (b - a) + s * dcurve, ds = curve - chord;
       const double jac = dtau.x() * ds.y() - dtau.y() * ds.x();  // < 0 when ds points right
-      sum += kWeights[i] * kWeights[k] * density(e, x) * (-jac);
+      sum += g.weights[i] * g.weights[k] * density(e, x) * (-jac);
     }
   }
   return sum;
