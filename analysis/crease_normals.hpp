@@ -1,5 +1,6 @@
 #pragma once
 // Smoothing normals with sharp creases kept: VRML's creaseAngle on an indexed triangle mesh.
+#include "analysis/edge_sides.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace cadnurbs {
@@ -31,15 +32,20 @@ struct CornerNormals {
 // in VRML97 and X3D; orientation is another step's job). A zero-area triangle joins nothing and keeps
 // a zero normal; a chain whose weighted sum cancels gets each corner's own face normal (one entry per
 // corner then). Normals are numbered in order of their groups' first corners.
-// Memory: besides the result (a normal per group, an int per corner), an int per corner and the edge
-// table while the groups are formed; no per-corner vectors (on 2 million triangles those would be 144 MB).
-// Refuses (std::invalid_argument) a negative or non-finite angle; validate()s the mesh.
+// Memory: besides the result (a normal per group, an int per corner), an int per corner and the side
+// partners while the groups are formed; no per-corner vectors (on 2 million triangles those would be 144 MB).
+// Time: the edges' angles and the groups' sums are shared out to worker_threads() threads, each sum made
+// by one thread in corner order, so the result does not depend on the thread count.
+// `partners`, when given, must be side_partners(welded) (orient_faces hands them out with its result);
+// otherwise they are made here.
+// Refuses (std::invalid_argument) a negative or non-finite angle, and partners not of three sides per
+// triangle; validate()s the mesh.
 CornerNormals crease_normals(const TriangleMesh& welded, double crease_angle_radians,
-                             CreaseNormalsReport* report = nullptr);
+                             CreaseNormalsReport* report = nullptr, const SidePartners* partners = nullptr);
 
 // The same normals spread to the corners: returns `welded` (by value, so that a caller done with it
 // can std::move it in) with corner_normals[3t + k] = normals[corner_normal[3t + k]].
 TriangleMesh with_crease_normals(TriangleMesh welded, double crease_angle_radians,
-                                 CreaseNormalsReport* report = nullptr);
+                                 CreaseNormalsReport* report = nullptr, const SidePartners* partners = nullptr);
 
 }  // namespace cadnurbs

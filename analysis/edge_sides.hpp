@@ -21,6 +21,16 @@ struct EdgeSides {
 // vertex (a few, except at fan centres: O(k log k) there).
 EdgeSides edge_sides(const TriangleMesh& mesh);
 
+// Each side's partner across its edge, for the steps that only need edges with exactly two faces.
+struct SidePartners {
+  std::vector<int> partner;    // side s's: the other side of its edge when the edge has exactly two, else -1
+  int boundary_edges = 0;      // edges with one side
+  int non_manifold_edges = 0;  // edges with three or more
+};
+
+// Takes a mesh as edge_sides does; returns its sides' partners. O(n), as edge_sides.
+SidePartners side_partners(const TriangleMesh& mesh);
+
 // The vertices side s runs from and to.
 inline int side_from(const TriangleMesh& mesh, int s) { return mesh.triangles[s / 3][s % 3]; }
 inline int side_to(const TriangleMesh& mesh, int s) { return mesh.triangles[s / 3][(s % 3 + 1) % 3]; }

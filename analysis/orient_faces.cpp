@@ -41,7 +41,8 @@ std::vector<char> duplicate_triangles(const TriangleMesh& mesh) {
 
 }  // namespace
 
-TriangleMesh orient_faces(TriangleMesh mesh, OrientReport* report, std::vector<int>* component_of_triangle) {
+TriangleMesh orient_faces(TriangleMesh mesh, OrientReport* report, std::vector<int>* component_of_triangle,
+                          SidePartners* partners_of_output) {
   validate(mesh, "orient_faces input");
   OrientReport r;
   const bool normals = !mesh.corner_normals.empty();
@@ -63,21 +64,10 @@ TriangleMesh orient_faces(TriangleMesh mesh, OrientReport* report, std::vector<i
   const std::size_t nt = T.size();
 
   // partner[s]: the other side of s's edge when that edge has exactly two faces, else -1.
-  std::vector<int> partner(3 * nt, -1);
-  std::vector<char> open(nt, 0);  // on a boundary or non-manifold edge
-  {
-    const EdgeSides edges = edge_sides(mesh);
-    for (std::size_t e = 0; e < edges.edge_count(); ++e) {
-      const int begin = edges.first[e], end = edges.first[e + 1];
-      if (end - begin == 2) {
-        partner[edges.sides[begin]] = edges.sides[begin + 1];
-        partner[edges.sides[begin + 1]] = edges.sides[begin];
-        continue;
-      }
-      ++(end - begin == 1 ? r.boundary_edges : r.non_manifold_edges);
-      for (int i = begin; i < end; ++i) open[edges.sides[i] / 3] = 1;
-    }
-  }
+  SidePartners sides = side_partners(mesh);
+  r.boundary_edges = sides.boundary_edges;
+  r.non_manifold_edges = sides.non_manifold_edges;
+  std::vector<int>& partner = sides.partner;
   // Two sides of one edge run the same way when they start at the same vertex.
   auto same_direction = [&](int s, int p) { return side_from(mesh, s) == side_from(mesh, p); };
 
@@ -121,7 +111,8 @@ TriangleMesh orient_faces(TriangleMesh mesh, OrientReport* report, std::vector<i
   }
   for (std::size_t t = 0; t < nt; ++t) {
     Component& part = parts[component[t]];
-    if (open[t]) part.closed = false;
+    if (partner[3 * t] < 0 || partner[3 * t + 1] < 0 || partner[3 * t + 2] < 0)
+      part.closed = false;  // on a boundary or non-manifold edge
     if (part.origin < 0) part.origin = T[t][0];
     const Eigen::Vector3d& o = mesh.positions[part.origin];
     const Eigen::Vector3d a = mesh.positions[T[t][0]] - o, b = mesh.positions[T[t][1]] - o,
@@ -143,6 +134,16 @@ TriangleMesh orient_faces(TriangleMesh mesh, OrientReport* report, std::vector<i
   }
   if (report) *report = r;
   if (component_of_triangle) *component_of_triangle = std::move(component);
+  if (partners_of_output) {
+    // A flipped triangle's sides 0 and 2 trade edges (corners 0, 2, 1 run 0 -> 2, 2 -> 1, 1 -> 0), side 1
+    // keeps its own: the partners follow.
+    auto moved = [&](int s) { return flip[s / 3] && s % 3 != 1 ? s - s % 3 + 2 - s % 3 : s; };
+    for (std::size_t t = 0; t < nt; ++t)
+      if (flip[t]) std::swap(partner[3 * t], partner[3 * t + 2]);
+    for (int& p : partner)
+      if (p >= 0) p = moved(p);
+    *partners_of_output = std::move(sides);
+  }
   return mesh;
 }
 

@@ -3,6 +3,7 @@
 // closed surfaces face outward. An STL file's winding is whatever its exporter wrote; this repairs it.
 #include <vector>
 
+#include "analysis/edge_sides.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace cadnurbs {
@@ -34,8 +35,11 @@ struct OrientReport {
 // Positions are unchanged. O(n) for n triangles (plus the small sorts of edge_sides).
 // If component_of_triangle is given it receives each output triangle's component (0 .. components - 1,
 // numbered in order of their first triangles).
+// If partners_of_output is given it receives side_partners() of the returned mesh (for crease_normals, which
+// then need not group the edges again).
 // Refuses nothing a validate()d mesh can hold; validate()s the mesh (GeometryError).
 TriangleMesh orient_faces(TriangleMesh welded, OrientReport* report = nullptr,
-                          std::vector<int>* component_of_triangle = nullptr);
+                          std::vector<int>* component_of_triangle = nullptr,
+                          SidePartners* partners_of_output = nullptr);
 
 }  // namespace cadnurbs

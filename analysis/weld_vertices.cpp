@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <tuple>
+#include <utility>
 
 #include "core/equal_points.hpp"
 #include "core/union_find.hpp"
@@ -21,25 +22,60 @@ Eigen::AlignedBox3d positions_box(const TriangleMesh& mesh) {
   return box;
 }
 
-}  // namespace
+// A point and the cube it lies in (cube coordinates counted from the box's low corner, so never negative).
+struct Entry {
+  std::int32_t x, y, z;
+  int point;
+};
 
-double default_weld_tolerance(const TriangleMesh& mesh) {
-  if (mesh.positions.empty()) return 0;
-  return 1e-6 * positions_box(mesh).diagonal().norm();
+// Sorts entries given in increasing order of point by (x, y, z, point): a stable radix sort on 11-bit digits
+// of z, then y, then x, skipping the digits all entries share. O(m) where a comparison sort is O(m log m).
+void sort_by_cube(std::vector<Entry>& entries) {
+  constexpr int kBits = 11, kDigits = 9;  // three digits a coordinate: 33 bits hold any int32 >= 0
+  constexpr std::size_t kBuckets = std::size_t{1} << kBits;
+  auto digit = [](const Entry& e, int d) -> std::size_t {
+    const std::int32_t coordinate = d < 3 ? e.z : d < 6 ? e.y : e.x;
+    return (static_cast<std::uint32_t>(coordinate) >> (kBits * (d % 3))) & (kBuckets - 1);
+  };
+  std::vector<std::array<std::uint32_t, kBuckets>> counts(kDigits);
+  for (auto& count : counts) count.fill(0);
+  for (const Entry& e : entries)
+    for (int d = 0; d < kDigits; ++d) ++counts[d][digit(e, d)];
+  std::vector<Entry> other;
+  for (int d = 0; d < kDigits; ++d) {
+    auto& count = counts[d];
+    if (std::find(count.begin(), count.end(), static_cast<std::uint32_t>(entries.size())) != count.end()) continue;
+    std::uint32_t sum = 0;
+    for (std::uint32_t& c : count) sum += std::exchange(c, sum);  // each bucket's first place
+    other.resize(entries.size());
+    for (const Entry& e : entries) other[count[digit(e, d)]++] = e;
+    entries.swap(other);
+  }
 }
 
-TriangleMesh weld_vertices(const TriangleMesh& mesh, double tolerance, WeldReport* report) {
+// weld_vertices into `out`, which may be `mesh` itself: then its buffers are reused (triangles and corner
+// normals compacted where they are; positions too when every distinct point is its own vertex and the
+// kept vertices come in increasing order of their first input vertex).
+void weld_into(const TriangleMesh& mesh, double tolerance, WeldReport* report, TriangleMesh& out) {
   if (!(tolerance >= 0) || !std::isfinite(tolerance))
     throw std::invalid_argument("weld_vertices: tolerance must be finite and >= 0, got " + std::to_string(tolerance));
   validate(mesh, "weld_vertices input");
   const std::size_t n = mesh.positions.size();
-  // Bitwise-equal vertices first (an STL file repeats each about six times), numbered in order of first
-  // occurrence, so that the distance search sees each point once.
+  // A soup (more vertices than triangles: an STL file read as it is repeats each corner about six times)
+  // has its bitwise-equal vertices numbered first, in order of first occurrence, so that the distance
+  // search sees each point once. Other meshes go to the search as they are: equal vertices are within
+  // any tolerance of each other, so they are joined there, with the same classes, roots and positions.
+  const bool soup = n > mesh.triangles.size();
   EqualPoints equal;
-  std::vector<int> point_of_vertex(n);
-  for (std::size_t v = 0; v < n; ++v) point_of_vertex[v] = equal.add(mesh.positions[v]);
-  const std::size_t m = equal.points().size();
-  auto point = [&](int q) -> const Eigen::Vector3d& { return equal.points()[q]; };
+  std::vector<int> point_of_vertex;
+  if (soup) {
+    equal.reserve(n / 4);
+    point_of_vertex.resize(n);
+    for (std::size_t v = 0; v < n; ++v) point_of_vertex[v] = equal.add(mesh.positions[v]);
+  }
+  const std::vector<Eigen::Vector3d>& points = soup ? equal.points() : mesh.positions;
+  const std::size_t m = points.size();
+  auto point_of = [&](int v) { return soup ? point_of_vertex[v] : v; };
 
   const Eigen::AlignedBox3d box = positions_box(mesh);
   const Eigen::Vector3d origin = n ? box.min() : Eigen::Vector3d::Zero();
@@ -59,22 +95,17 @@ TriangleMesh weld_vertices(const TriangleMesh& mesh, double tolerance, WeldRepor
   // two neighbouring ones; of a cell's 26 neighbours the 13 that sort after it form five runs in this
   // order (same x and y: the next z; same x, next y; next x with three y), each a contiguous stretch
   // z - 1 .. z + 1, and as the cells advance each run's start only moves forward: one sweep, O(m).
-  struct Entry {
-    std::int32_t x, y, z;
-    int point;
-  };
   std::vector<Entry> entries(m);
   for (std::size_t q = 0; q < m; ++q) {
-    const Eigen::Vector3d c = ((point(static_cast<int>(q)) - origin) / cell).array().floor();
+    const Eigen::Vector3d c = ((points[q] - origin) / cell).array().floor();
     entries[q] = {static_cast<std::int32_t>(c.x()), static_cast<std::int32_t>(c.y()), static_cast<std::int32_t>(c.z()),
                   static_cast<int>(q)};
   }
+  sort_by_cube(entries);
   auto cell_less = [](const Entry& a, const Entry& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); };
-  std::sort(entries.begin(), entries.end(),
-            [](const Entry& a, const Entry& b) { return std::tie(a.x, a.y, a.z, a.point) < std::tie(b.x, b.y, b.z, b.point); });
   UnionFind classes(m);
   auto compare = [&](const Entry& a, const Entry& b) {
-    if ((point(a.point) - point(b.point)).squaredNorm() <= tolerance2) classes.unite(a.point, b.point);
+    if ((points[a.point] - points[b.point]).squaredNorm() <= tolerance2) classes.unite(a.point, b.point);
   };
   constexpr std::array<std::array<int, 2>, 5> runs = {{{0, 0}, {0, 1}, {1, -1}, {1, 0}, {1, 1}}};
   std::array<std::size_t, 5> run_start{};
@@ -100,43 +131,90 @@ TriangleMesh weld_vertices(const TriangleMesh& mesh, double tolerance, WeldRepor
   for (std::size_t q = 0; q < m; ++q) {
     root[q] = classes.find(static_cast<int>(q));
     if (root[q] == static_cast<int>(q)) ++r.vertex_classes;
-    r.largest_merge_distance = std::max(r.largest_merge_distance, (point(static_cast<int>(q)) - point(root[q])).norm());
+    r.largest_merge_distance = std::max(r.largest_merge_distance, (points[q] - points[root[q]]).norm());
   }
+  classes = UnionFind();
 
   // A class's root is its smallest point, that of the class's first vertex in input order.
-  TriangleMesh out;
-  out.positions.reserve(r.vertex_classes);
+  const bool in_place = &out == &mesh;
   std::vector<int> index(m, -1);  // class root -> output vertex
+  int vertices = 0;
+  bool increasing = true;  // roots numbered in their own order
+  int last_root = -1;
   const bool normals = mesh.corner_normals.size() == 3 * mesh.triangles.size() && !mesh.triangles.empty();
-  out.triangles.reserve(mesh.triangles.size());
-  if (normals) out.corner_normals.reserve(mesh.corner_normals.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+  const std::size_t triangles = mesh.triangles.size();
+  if (!in_place) {
+    out.triangles.reserve(triangles);
+    if (normals) out.corner_normals.reserve(mesh.corner_normals.size());
+  }
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < triangles; ++t) {
     const auto& tri = mesh.triangles[t];
-    const std::array<int, 3> c{root[point_of_vertex[tri[0]]], root[point_of_vertex[tri[1]]], root[point_of_vertex[tri[2]]]};
+    const std::array<int, 3> c{root[point_of(tri[0])], root[point_of(tri[1])], root[point_of(tri[2])]};
     if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) {
       ++r.collapsed_triangles;
       continue;
     }
-    const auto& a = point(c[0]);
-    if ((point(c[1]) - a).cross(point(c[2]) - a).squaredNorm() == 0) {
+    const auto& a = points[c[0]];
+    if ((points[c[1]] - a).cross(points[c[2]] - a).squaredNorm() == 0) {
       ++r.zero_area_triangles;
       continue;
     }
-    std::array<int, 3> kept{};
+    std::array<int, 3> renumbered{};
     for (int k = 0; k < 3; ++k) {
       if (index[c[k]] < 0) {
-        index[c[k]] = static_cast<int>(out.positions.size());
-        out.positions.push_back(point(c[k]));
+        index[c[k]] = vertices++;
+        increasing = increasing && c[k] > last_root;
+        last_root = c[k];
       }
-      kept[k] = index[c[k]];
+      renumbered[k] = index[c[k]];
     }
-    out.triangles.push_back(kept);
-    if (normals)
-      for (int k = 0; k < 3; ++k) out.corner_normals.push_back(mesh.corner_normals[3 * t + k]);
+    if (in_place) {
+      out.triangles[kept] = renumbered;
+      if (normals)
+        for (int k = 0; k < 3; ++k) out.corner_normals[3 * kept + k] = out.corner_normals[3 * t + k];
+    } else {
+      out.triangles.push_back(renumbered);
+      if (normals)
+        for (int k = 0; k < 3; ++k) out.corner_normals.push_back(mesh.corner_normals[3 * t + k]);
+    }
+    ++kept;
   }
-  r.output_vertices = static_cast<int>(out.positions.size());
+  if (in_place) {
+    out.triangles.resize(kept);
+    if (normals) out.corner_normals.resize(3 * kept);
+  }
+  if (in_place && !soup && increasing) {
+    // Each kept root moves to a place at or before its own, and no later root's place is written first.
+    for (std::size_t q = 0; q < m; ++q)
+      if (index[q] >= 0) out.positions[index[q]] = out.positions[q];
+    out.positions.resize(vertices);
+  } else {
+    std::vector<Eigen::Vector3d> positions(vertices);
+    for (std::size_t q = 0; q < m; ++q)
+      if (index[q] >= 0) positions[index[q]] = points[q];
+    out.positions = std::move(positions);
+  }
+  r.output_vertices = vertices;
   if (report) *report = r;
+}
+
+}  // namespace
+
+double default_weld_tolerance(const TriangleMesh& mesh) {
+  if (mesh.positions.empty()) return 0;
+  return 1e-6 * positions_box(mesh).diagonal().norm();
+}
+
+TriangleMesh weld_vertices(const TriangleMesh& mesh, double tolerance, WeldReport* report) {
+  TriangleMesh out;
+  weld_into(mesh, tolerance, report, out);
   return out;
+}
+
+TriangleMesh weld_vertices(TriangleMesh&& mesh, double tolerance, WeldReport* report) {
+  weld_into(mesh, tolerance, report, mesh);
+  return std::move(mesh);
 }
 
 }  // namespace cadnurbs

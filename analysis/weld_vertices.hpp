@@ -22,9 +22,11 @@ double default_weld_tolerance(const TriangleMesh& mesh);
 
 // Takes a mesh and a tolerance >= 0; returns the mesh with every pair of vertices at distance
 // <= tolerance in one vertex. Exact: every such pair is found, none is missed at a cell border
-// (bitwise-equal vertices are merged first; the distinct points are sorted into cubes at least
-// `tolerance` wide and each cube is compared with the 26 around it, in one sweep). O(n) expected for
-// the n vertices plus O(m log m) for the m distinct points, unless very many crowd within one tolerance.
+// (the points are sorted into cubes at least `tolerance` wide by a radix sort and each cube is compared
+// with the 26 around it, in one sweep). A soup (more vertices than triangles, as an STL file read without
+// merge_equal_points) has its bitwise-equal vertices numbered first, so that the sweep sees each point
+// once; the result is the same either way. O(n) expected for the n vertices, unless very many crowd
+// within one tolerance.
 // - The merge is transitive: a chain a-b-c with a, b and b, c within the tolerance is one vertex even
 //   when a, c are not. This is the usual choice because any other leaves the result depending on the
 //   vertex order (which of b's neighbours wins), and a chain in a real part means the tolerance is
@@ -36,5 +38,8 @@ double default_weld_tolerance(const TriangleMesh& mesh);
 // - Vertices that no kept triangle uses are dropped.
 // Refuses (std::invalid_argument) a negative or non-finite tolerance; validate()s the mesh.
 TriangleMesh weld_vertices(const TriangleMesh& mesh, double tolerance, WeldReport* report = nullptr);
+// The same result, made in the buffers of a mesh the caller is done with (no second copy of the
+// triangles, nor of the positions when they need no reordering): less memory and fewer fresh pages.
+TriangleMesh weld_vertices(TriangleMesh&& mesh, double tolerance, WeldReport* report = nullptr);
 
 }  // namespace cadnurbs

@@ -2,6 +2,7 @@
 // 30 degrees: a normal per corner group and an index per corner) against OpenMesh (IO::read_mesh, which merges equal points, then face and vertex normals by
 // update_normals) and assimp (ReadFile with JoinIdenticalVertices and GenSmoothNormals at a maximum
 // smoothing angle of 30 degrees) on one generated binary STL of about two million triangles.
+// Ours runs twice per round: with the machine's threads (our parallel stages) and with one; the peers use one.
 // Each is run three times, each time in a fresh process (this program re-executed with --run NAME), so
 // that its peak resident memory (the child's ru_maxrss from wait4) is its own; the time is the child's
 // own wall time from opening the file to the normals, the best of the three.
@@ -24,11 +25,13 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "analysis/crease_normals.hpp"
 #include "analysis/orient_faces.hpp"
 #include "analysis/weld_vertices.hpp"
+#include "core/worker_threads.hpp"
 #include "formats/stl/stl_reader.hpp"
 #include "formats/stl/stl_writer.hpp"
 
@@ -108,9 +111,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-int run_ours(const std::string& path) {
+// threads: worker_threads() for our parallel stages (0: the machine's count).
+int run_ours(const std::string& path, int threads) {
+  if (threads > 0) set_worker_threads(threads);
   const auto start = std::chrono::steady_clock::now();
-  std::fprintf(stderr, " ours:");
+  std::fprintf(stderr, " ours (%d threads):", worker_threads());
   auto stage = [&, last = start](const char* name) mutable {  // each stage's time on stderr
     const auto now = std::chrono::steady_clock::now();
     rusage usage{};
@@ -124,14 +129,16 @@ int run_ours(const std::string& path) {
   TriangleMesh soup = read_stl(path, {.facet_normals = false, .merge_equal_points = true});
   stage("read_stl");
   const double tolerance = default_weld_tolerance(soup);
-  TriangleMesh welded = weld_vertices(soup, tolerance);
-  soup = {};
+  TriangleMesh welded = weld_vertices(std::move(soup), tolerance);
   stage("weld");
-  TriangleMesh oriented = orient_faces(std::move(welded));
+  SidePartners partners;
+  TriangleMesh oriented = orient_faces(std::move(welded), nullptr, nullptr, &partners);
   stage("orient");
   CreaseNormalsReport report;
-  const CornerNormals shared = crease_normals(oriented, kCreaseDegrees * std::numbers::pi / 180, &report);
+  const CornerNormals shared =
+      crease_normals(oriented, kCreaseDegrees * std::numbers::pi / 180, &report, &partners);
   stage("creases");
+  std::fprintf(stderr, "\n");
   const double seconds = seconds_since(start);
   std::printf("%.6f %zu %zu\n", seconds, oriented.positions.size(), shared.normals.size());
   return 0;
@@ -176,6 +183,16 @@ struct Run {
   std::size_t vertices = 0, normals = 0;
 };
 
+// The 1-minute load average, as /proc/loadavg gives it (-1 where there is none).
+double load_average() {
+  double load = -1;
+  if (std::FILE* f = std::fopen("/proc/loadavg", "r")) {
+    if (std::fscanf(f, "%lf", &load) != 1) load = -1;
+    std::fclose(f);
+  }
+  return load;
+}
+
 Run run_child(const std::string& self, const std::string& name, const std::string& path) {
   int out[2];
   if (pipe(out) != 0) throw std::runtime_error("pipe failed");
@@ -208,7 +225,8 @@ Run run_child(const std::string& self, const std::string& name, const std::strin
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.size() == 3 && args[0] == "--run") {
-    if (args[1] == "ours") return run_ours(args[2]);
+    if (args[1] == "ours") return run_ours(args[2], 0);
+    if (args[1] == "ours-1-thread") return run_ours(args[2], 1);
     if (args[1] == "openmesh") return run_openmesh(args[2]);
     if (args[1] == "assimp") return run_assimp(args[2]);
     return 2;
@@ -217,8 +235,9 @@ int main(int argc, char** argv) {
   if (args.size() == 2 && args[0] == "--cache") cache = args[1];
   const std::string path = input_stl(cache);
   const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-  std::printf("input: %s, %ju triangles, %ju bytes; each run in a fresh process, best of 3\n", path.c_str(),
-              (std::filesystem::file_size(path) - 84) / 50, std::filesystem::file_size(path));
+  std::printf("input: %s, %ju triangles, %ju bytes; each run in a fresh process, best of 3; %u hardware threads\n",
+              path.c_str(), (std::filesystem::file_size(path) - 84) / 50, std::filesystem::file_size(path),
+              std::thread::hardware_concurrency());
 
   struct Row {
     const char* name;
@@ -226,10 +245,12 @@ int main(int argc, char** argv) {
     Run best;
   };
   std::vector<Row> rows = {
-      {"ours", "read_stl + weld_vertices + orient_faces + crease_normals 30 deg", {}},
+      {"ours", "read_stl + weld_vertices + orient_faces + crease_normals 30 deg, worker_threads() threads", {}},
+      {"ours-1-thread", "the same, 1 thread", {}},
       {"openmesh", "IO::read_mesh + update_normals (face and vertex normals, no crease)", {}},
       {"assimp", "ReadFile: JoinIdenticalVertices + GenSmoothNormals 30 deg", {}},
   };
+  const double load_before = load_average();
   for (int round = 0; round < 3; ++round)
     for (Row& row : rows) {  // interleaved, so that a busy moment does not fall on one contender only
       const Run run = run_child(self, row.name, path);
@@ -239,6 +260,8 @@ int main(int argc, char** argv) {
       row.best.vertices = run.vertices;
       row.best.normals = run.normals;
     }
+  std::printf("1-minute load average before the runs: %.2f\n", load_before);
+  std::printf("1-minute load average after the runs: %.2f\n", load_average());
   const Run& ours = rows[0].best;
   std::printf("\n| | what runs | vertices out | normals out | wall time (s), best of 3 | / ours | peak RSS (MiB) | / ours |\n"
               "|---|---|---:|---:|---:|---:|---:|---:|\n");

@@ -50,19 +50,23 @@ int run_normals(const std::vector<std::string>& args) {
   // own, and the soup's three copies of every corner would be the largest thing in memory.
   const bool stl = input_format(in).extensions.front() == ".stl";
   const Scene scene = stl ? Scene{} : read_scene(in);
-  const TriangleMesh triangles =
+  TriangleMesh triangles =
       stl ? read_stl(in, {.facet_normals = false, .merge_equal_points = true}) : scene_triangles(scene);
   if (triangles.triangles.empty()) throw FileError(in + ": no triangles to give normals to");
   checked_mesh_diagonal(triangles, in);
+  const std::size_t corners = 3 * triangles.triangles.size();
   WeldReport weld;
   const double tol = a.has("weld") ? tolerance : default_weld_tolerance(triangles);
-  const TriangleMesh welded = weld_vertices(triangles, tol, &weld);
+  // Each step takes the previous one's mesh over (no copies: on millions of triangles they would be most
+  // of the memory), and the crease step the edge partners orient_faces found.
+  TriangleMesh welded = weld_vertices(std::move(triangles), tol, &weld);
   if (welded.triangles.empty())
     throw FileError(in + ": every triangle collapses when welded at " + a.value("weld", std::to_string(tol)));
   OrientReport orient;
-  const TriangleMesh oriented = orient_faces(welded, &orient);
+  SidePartners partners;
+  TriangleMesh oriented = orient_faces(std::move(welded), &orient, nullptr, &partners);
   CreaseNormalsReport creases;
-  const TriangleMesh shaded = with_crease_normals(oriented, degrees * M_PI / 180.0, &creases);
+  const TriangleMesh shaded = with_crease_normals(std::move(oriented), degrees * M_PI / 180.0, &creases, &partners);
 
   Scene result;
   result.unit = scene.unit;
@@ -72,7 +76,7 @@ int run_normals(const std::vector<std::string>& args) {
   SceneWriteOptions options;
   options.title = std::filesystem::path(in).filename().string();
   write_scene(out, result, options);
-  std::cout << in << ": " << 3 * triangles.triangles.size() << " corners at " << weld.input_vertices
+  std::cout << in << ": " << corners << " corners at " << weld.input_vertices
             << " distinct points, welded at " << tol << " " << scene.unit.name << " to " << weld.output_vertices
             << " vertices (largest move " << weld.largest_merge_distance << "), "
             << weld.collapsed_triangles << " collapsed and " << weld.zero_area_triangles

@@ -30,11 +30,15 @@ int EqualPoints::add(const Eigen::Vector3d& p) {
 
 void EqualPoints::reserve(std::size_t count) {
   points_.reserve(count);
-  while (slots_.size() < 2 * count) grow();
+  std::size_t size = slots_.size();
+  while (size < 2 * count) size *= 2;
+  if (size > slots_.size()) rehash(size);
 }
 
-void EqualPoints::grow() {
-  std::vector<Slot> old(2 * slots_.size());
+void EqualPoints::grow() { rehash(2 * slots_.size()); }
+
+void EqualPoints::rehash(std::size_t size) {
+  std::vector<Slot> old(size);
   old.swap(slots_);
   const std::size_t mask = slots_.size() - 1;
   for (const Slot& slot : old) {

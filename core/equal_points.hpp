@@ -26,6 +26,7 @@ class EqualPoints {
   };
   static std::uint64_t hash(const Eigen::Vector3d& p);
   void grow();
+  void rehash(std::size_t size);  // a power of two, at least twice the points
 
   std::vector<Eigen::Vector3d> points_;
   std::vector<Slot> slots_ = std::vector<Slot>(1024);  // at most half full, so probe runs stay short

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/equal_points.hpp"
+#include "core/worker_threads.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/stl/facet_normal.hpp"
 
@@ -52,6 +53,25 @@ class MeshBuilder {
     if (!options_.facet_normals) return;
     normals_.push_back(normal);
     if (is_supplied(normal)) any_normal_ = true;
+  }
+
+  // Takes the builder of the facets that follow this one's; adds them as if this builder had read them.
+  void append(MeshBuilder&& later) {
+    std::vector<int> number;  // later's position numbers -> this builder's
+    if (options_.merge_equal_points) {
+      number.reserve(later.equal_.points().size());
+      for (const Eigen::Vector3d& p : later.equal_.points()) number.push_back(equal_.add(p));
+    } else {
+      const int offset = static_cast<int>(mesh_.positions.size());
+      for (std::size_t i = 0; i < later.mesh_.positions.size(); ++i) number.push_back(offset + static_cast<int>(i));
+      mesh_.positions.insert(mesh_.positions.end(), later.mesh_.positions.begin(), later.mesh_.positions.end());
+    }
+    later.equal_ = EqualPoints();
+    later.mesh_.positions = {};
+    for (const auto& t : later.mesh_.triangles) mesh_.triangles.push_back({number[t[0]], number[t[1]], number[t[2]]});
+    normals_.insert(normals_.end(), later.normals_.begin(), later.normals_.end());
+    any_normal_ = any_normal_ || later.any_normal_;
+    later = MeshBuilder(options_);
   }
 
   TriangleMesh finish() && {
@@ -298,16 +318,29 @@ TriangleMesh read_stl(const std::string& path, StlReadOptions options) {
   if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) throw FileError(path + ": read failed");
   if (size >= kHeaderBytes && size == binary_size(read_u32le(bytes.data() + 80))) {
     const std::uint32_t count = read_u32le(bytes.data() + 80);
-    MeshBuilder builder(options);
-    builder.reserve(count);
-    constexpr std::uint64_t kBlock = 1 << 14;  // facets per read: 800 kB
-    for (std::uint64_t first = 0; first < count; first += kBlock) {
-      const std::uint64_t n = std::min<std::uint64_t>(kBlock, count - first);
-      bytes.resize(kFacetBytes * n);
-      if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) throw FileError(path + ": read failed");
-      add_binary_facets(bytes.data(), first, n, count, path, builder);
-    }
-    return std::move(builder).finish();
+    // A large file is read in parts at once, each by its own thread into its own builder, and the parts
+    // appended in order: the same mesh as read in one go (MeshBuilder::append).
+    constexpr std::uint32_t kFacetsPerThread = 1 << 16;
+    const int workers = std::max(1, std::min(worker_threads(), static_cast<int>(count / kFacetsPerThread)));
+    std::vector<MeshBuilder> parts(workers, MeshBuilder(options));
+    on_workers(workers, [&](int w) {
+      const auto [begin, end] = worker_range(count, w, workers);
+      parts[w].reserve(w == 0 ? count : end - begin);  // the first part takes in the others
+      std::ifstream part_in(path, std::ios::binary);
+      if (!part_in.seekg(static_cast<std::streamoff>(kHeaderBytes + kFacetBytes * begin)))
+        throw FileError(path + ": read failed");
+      std::string block;
+      constexpr std::uint64_t kBlock = 1 << 14;  // facets per read: 800 kB
+      for (std::uint64_t first = begin; first < end; first += kBlock) {
+        const std::uint64_t n = std::min<std::uint64_t>(kBlock, end - first);
+        block.resize(kFacetBytes * n);
+        if (!part_in.read(block.data(), static_cast<std::streamsize>(block.size())))
+          throw FileError(path + ": read failed");
+        add_binary_facets(block.data(), first, n, count, path, parts[w]);
+      }
+    });
+    for (int w = 1; w < workers; ++w) parts[0].append(std::move(parts[w]));
+    return std::move(parts[0]).finish();
   }
   bytes.resize(size);
   if (size > kHeaderBytes &&

@@ -1,5 +1,6 @@
 // with_crease_normals: the welded STL cube (sharp at 30 degrees, one normal per corner at 100), a
-// tessellated cylinder (smooth sides, sharp caps), and the edge kinds that never join.
+// tessellated cylinder (smooth sides, sharp caps), and the edge kinds that never join; edges near the
+// crease angle judged as its definition says, and the same bits from any number of threads.
 #include "analysis/crease_normals.hpp"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <set>
 
 #include "analysis/weld_vertices.hpp"
+#include "core/worker_threads.hpp"
 #include "weld_test_meshes.hpp"
 
 namespace cadnurbs {
@@ -147,6 +149,67 @@ TEST(CreaseNormals, OnlyManifoldConsistentEdgesJoin) {
   EXPECT_EQ(report.non_manifold_edges, 1);
   EXPECT_EQ(report.distinct_normals, 9);
   EXPECT_THROW(with_crease_normals(m, -1, nullptr), std::invalid_argument);
+}
+
+// Two triangles on the edge (0,0,0)-(length,0,0), the second at `dihedral` radians from the first; returns
+// whether with_crease_normals joins them at `crease` and whether the definition does: atan2 of the unit
+// normals' cross and dot products below the crease angle.
+std::pair<bool, bool> joined_and_defined(double length, double width, double dihedral, double crease) {
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {length, 0, 0}, {0.3 * length, width, 0},
+                 {0.6 * length, -width * std::cos(dihedral), width * std::sin(dihedral)}};
+  m.triangles = {{0, 1, 2}, {1, 0, 3}};
+  CreaseNormalsReport report;
+  crease_normals(m, crease, &report);
+  const Eigen::Vector3d n1 = face_normal(m, 0), n2 = face_normal(m, 1);
+  auto unit = [&](int t) {
+    const auto& T = m.triangles[t];
+    const Eigen::Vector3d n = (m.positions[T[1]] - m.positions[T[0]]).cross(m.positions[T[2]] - m.positions[T[0]]);
+    return Eigen::Vector3d(n / n.norm());
+  };
+  const Eigen::Vector3d u1 = unit(0), u2 = unit(1);
+  EXPECT_LE((u1 - n1).norm() + (u2 - n2).norm(), 1e-15);
+  return {report.smooth_edges == 1, std::atan2(u1.cross(u2).norm(), u1.dot(u2)) < crease};
+}
+
+// Most edges are judged without the atan2 (crease_normals.cpp: SmoothTest); at and around the crease
+// angle, down to a few ulps, and at every scale, the judgement must be the atan2's.
+TEST(CreaseNormals, EdgesNearTheCreaseAngleAreJudgedAsTheDefinitionSays) {
+  int joined = 0, apart = 0;
+  for (const double crease : {0.0, 1e-4, 0.01, 30 * degrees, 45 * degrees, 89.99 * degrees, 90 * degrees, 135 * degrees})
+    for (const double length : {1e-40, 1e-3, 1.0, 7e5, 1e60})
+      for (const double offset : {-1e-3, -1e-7, -1e-10, -1e-13, -1e-15, 0.0, 1e-15, 1e-13, 1e-10, 1e-7, 1e-3})
+        for (const double width : {0.01, 1.0, 3.0}) {
+          const auto [by_crease_normals, by_definition] = joined_and_defined(length, width * length, crease + offset, crease);
+          EXPECT_EQ(by_crease_normals, by_definition)
+              << "crease " << crease << " length " << length << " offset " << offset << " width " << width;
+          ++(by_definition ? joined : apart);
+        }
+  EXPECT_GT(joined, 300);  // both sides of the angle are tried
+  EXPECT_GT(apart, 300);
+}
+
+// The edges' angles and the groups' sums are shared out to worker threads: any count gives the same bits.
+TEST(CreaseNormals, AnyThreadCountGivesTheSameBits) {
+  const TriangleMesh soup = test::stl_cylinder(3.0, 2.0, 500);
+  TriangleMesh welded = weld_vertices(soup, default_weld_tolerance(soup));
+  for (std::size_t v = 0; v < welded.positions.size(); ++v)  // a rough surface: angles on both sides of 30
+    welded.positions[v] += 0.02 * Eigen::Vector3d(std::sin(7.0 * v), std::cos(5.0 * v), std::sin(3.0 * v));
+  set_worker_threads(1);
+  CreaseNormalsReport one_report;
+  const CornerNormals one = crease_normals(welded, 30 * degrees, &one_report);
+  EXPECT_GT(one_report.smooth_edges, 100);
+  EXPECT_GT(one_report.sharp_edges, 100);
+  for (const int threads : {2, 3, 7}) {
+    set_worker_threads(threads);
+    CreaseNormalsReport report;
+    const CornerNormals shared = crease_normals(welded, 30 * degrees, &report);
+    EXPECT_EQ(shared.normals, one.normals) << threads << " threads";
+    EXPECT_EQ(shared.corner_normal, one.corner_normal) << threads << " threads";
+    EXPECT_EQ(report.smooth_edges, one_report.smooth_edges) << threads << " threads";
+    EXPECT_EQ(report.sharp_edges, one_report.sharp_edges) << threads << " threads";
+  }
+  set_worker_threads(0);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // orient_faces: flipped and inside-out cubes come out outward, two cubes are two components, a Moebius
 // strip is one non-orientable component, duplicates are dropped; on the corpus STL files the crease
 // normals then find no inconsistent edge in an orientable component and every closed one has volume > 0.
+// The side partners handed out with the result are the result's own (flips and dropped duplicates moved).
 #include "analysis/orient_faces.hpp"
 
 #include <gtest/gtest.h>
@@ -24,6 +25,14 @@ TriangleMesh welded_cube(double size) {
 }
 
 void flip(TriangleMesh& m, int t) { std::swap(m.triangles[t][0], m.triangles[t][1]); }
+
+// The side partners orient_faces hands out are those of the mesh it returns.
+void expect_partners_of(const SidePartners& given, const TriangleMesh& m, const char* what) {
+  const SidePartners made = side_partners(m);
+  EXPECT_EQ(given.partner, made.partner) << what;
+  EXPECT_EQ(given.boundary_edges, made.boundary_edges) << what;
+  EXPECT_EQ(given.non_manifold_edges, made.non_manifold_edges) << what;
+}
 
 // Six times the signed volume of the triangles for which keep(t) holds, from the origin.
 template <class Keep>
@@ -139,7 +148,10 @@ TEST(OrientFaces, MoebiusStripIsOneNonOrientableComponent) {
     m.triangles.push_back({top, next_bottom, next_top});
   }
   OrientReport report;
-  const TriangleMesh oriented = orient_faces(m, &report);
+  SidePartners partners;
+  const TriangleMesh oriented = orient_faces(m, &report, nullptr, &partners);
+  expect_partners_of(partners, oriented, "Moebius strip");
+  EXPECT_GT(report.flipped_triangles, 0);
   EXPECT_EQ(report.components, 1);
   EXPECT_EQ(report.non_orientable_components, 1);
   EXPECT_EQ(report.inconsistent_edges, 1);
@@ -224,8 +236,22 @@ TEST(OrientFaces, CorpusFilesOrientConsistentlyAndOutward) {
     // one up to turning it over whole.
     TriangleMesh scrambled = welded;
     for (std::size_t t = 0; t < scrambled.triangles.size(); t += 3) std::swap(scrambled.triangles[t][0], scrambled.triangles[t][1]);
+    // Duplicates too, one winding or the other, so that flips and dropped triangles both move the sides.
+    scrambled.corner_normals.clear();
+    for (std::size_t t = 0; t < welded.triangles.size(); t += 5)
+      scrambled.triangles.push_back(t % 2 ? scrambled.triangles[t] : std::array{scrambled.triangles[t][1],
+                                                                               scrambled.triangles[t][0],
+                                                                               scrambled.triangles[t][2]});
     OrientReport again;
-    const TriangleMesh restored = orient_faces(scrambled, &again);
+    SidePartners partners;
+    const TriangleMesh restored = orient_faces(scrambled, &again, nullptr, &partners);
+    expect_partners_of(partners, restored, file);
+    CreaseNormalsReport given_report, made_report;
+    const CornerNormals given = crease_normals(restored, 30 * std::numbers::pi / 180, &given_report, &partners);
+    const CornerNormals made = crease_normals(restored, 30 * std::numbers::pi / 180, &made_report);
+    EXPECT_EQ(given.normals, made.normals) << file;
+    EXPECT_EQ(given.corner_normal, made.corner_normal) << file;
+    EXPECT_EQ(given_report.smooth_edges, made_report.smooth_edges) << file;
     ASSERT_EQ(restored.triangles.size(), oriented.triangles.size()) << file;
     EXPECT_GT(again.flipped_triangles, 0) << file;
     std::vector<int> same(report.components, 0), reversed(report.components, 0);

@@ -119,6 +119,39 @@ TEST(WeldVertices, MatchesBruteForcePartition) {
   EXPECT_LT(classes, n - 100);  // the test merges something
 }
 
+// The in-place weld (a mesh moved in) gives what the copying one gives, also where the kept vertices come
+// out of their input order (a dropped first triangle, chains merged into a later vertex) so that the
+// positions cannot be compacted where they are, and on indexed meshes where equal vertices are left to the
+// distance sweep rather than numbered first.
+TEST(WeldVertices, InPlaceWeldGivesTheCopyingWeldsMesh) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::uniform_int_distribution<int> pick(0, 999);
+  TriangleMesh m;
+  for (int i = 0; i < 1000; ++i) m.positions.emplace_back(unit(random), unit(random), unit(random));
+  for (int i = 0; i < 200; ++i) m.positions.push_back(m.positions[pick(random)]);  // bitwise repeats
+  m.triangles.push_back({1100, 1101, 1101});  // collapsed: the first vertices used are late ones
+  for (int i = 0; i < 3000; ++i) {
+    const int a = pick(random), b = pick(random) + 200 * (i % 2), c = pick(random);
+    if (a != b && b != c && c != a) m.triangles.push_back({a, b, c});
+  }
+  for (std::size_t c = 0; c < 3 * m.triangles.size(); ++c) m.corner_normals.emplace_back(c, 0, 1);
+  for (const double tolerance : {0.0, 0.01, 0.04}) {
+    WeldReport copying, in_place;
+    const TriangleMesh expected = weld_vertices(m, tolerance, &copying);
+    const TriangleMesh welded = weld_vertices(TriangleMesh(m), tolerance, &in_place);
+    EXPECT_EQ(welded.positions, expected.positions) << tolerance;
+    EXPECT_EQ(welded.triangles, expected.triangles) << tolerance;
+    EXPECT_EQ(welded.corner_normals, expected.corner_normals) << tolerance;
+    EXPECT_EQ(in_place.vertex_classes, copying.vertex_classes) << tolerance;
+    EXPECT_EQ(in_place.output_vertices, copying.output_vertices) << tolerance;
+    EXPECT_EQ(in_place.collapsed_triangles, copying.collapsed_triangles) << tolerance;
+    EXPECT_EQ(in_place.largest_merge_distance, copying.largest_merge_distance) << tolerance;
+    EXPECT_LE(copying.vertex_classes, 1000) << tolerance;  // the repeats at least are merged
+    EXPECT_GE(copying.collapsed_triangles, 1) << tolerance;
+  }
+}
+
 // OpenMesh's STL reader merges vertices with equal float coordinates; where a triangle cannot join its
 // half-edge mesh (a non-manifold "complex vertex") its importer adds the triangle on copies of its
 // vertices, so the reference count is OpenMesh's distinct points, not n_vertices(). Our reader widens
@@ -175,6 +208,10 @@ TEST(WeldVertices, CorpusMergedReadWeldsAsTheSoup) {
       EXPECT_EQ(from_merged.vertex_classes, from_soup.vertex_classes) << file;
       EXPECT_EQ(from_merged.largest_merge_distance, from_soup.largest_merge_distance) << file;
       EXPECT_EQ(weld_vertices(bare, tolerance).positions, expected.positions) << file;
+      WeldReport in_place_report;
+      EXPECT_TRUE(same(weld_vertices(TriangleMesh(merged), tolerance, &in_place_report), expected)) << file;
+      EXPECT_EQ(in_place_report.largest_merge_distance, from_merged.largest_merge_distance) << file;
+      EXPECT_TRUE(same(weld_vertices(TriangleMesh(soup), tolerance), expected)) << file;
     }
   }
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/geometry_error.hpp"
+#include "core/worker_threads.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/stl/stl_reader.hpp"
 #include "formats/stl/stl_writer.hpp"
@@ -288,6 +289,47 @@ TEST(StlErrors, NonFiniteCoordinatesNameTheTriangle) {
   const std::size_t offset = 84 + 50 * 1 + 12 + 12 * 2 + 4;  // triangle 2, vertex 3, y
   for (int b = 0; b < 4; ++b) bytes[offset + b] = static_cast<char>(std::bit_cast<std::uint32_t>(inf) >> (8 * b));
   EXPECT_EQ(file_error([&] { parse_stl(bytes, "x.stl"); }), "x.stl: byte 170: vertex 3 of triangle 2 of 9 is not finite");
+}
+
+// A binary file of 2^17 facets or more is read in parts by worker threads: the same mesh (positions
+// numbered in order of first occurrence across the parts), normals and first error as one thread reads.
+TEST_F(StlFiles, LargeBinaryReadInPartsIsTheMeshReadInOneGo) {
+  const int n = 321;  // 320 x 320 quads: 204,800 facets, three parts of 2^16 or more
+  TriangleMesh grid;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) grid.positions.emplace_back(i, j, std::sin(0.37 * i) * std::cos(0.23 * j));
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      const int a = i * n + j;
+      grid.triangles.push_back({a, a + n, a + n + 1});
+      grid.triangles.push_back({a, a + n + 1, a + 1});
+    }
+  write_stl(path("grid.stl"), grid, StlEncoding::binary, "grid");
+  auto same = [](const TriangleMesh& a, const TriangleMesh& b) {
+    return a.positions == b.positions && a.triangles == b.triangles && a.corner_normals == b.corner_normals;
+  };
+  for (const bool merge : {false, true}) {
+    set_worker_threads(1);
+    const TriangleMesh one = read_stl(path("grid.stl"), {.merge_equal_points = merge});
+    EXPECT_EQ(one.positions.size(), merge ? grid.positions.size() : 3 * grid.triangles.size());
+    for (const int threads : {2, 3, 8}) {
+      set_worker_threads(threads);
+      EXPECT_TRUE(same(read_stl(path("grid.stl"), {.merge_equal_points = merge}), one)) << threads << " threads";
+    }
+  }
+  std::string bytes = read_file(path("grid.stl"));
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (const std::size_t triangle : {150000, 90000})  // in the third part and in the second
+    for (int b = 0; b < 4; ++b)
+      bytes[84 + 50 * triangle + 12 + b] = static_cast<char>(std::bit_cast<std::uint32_t>(nan) >> (8 * b));
+  write_file_atomically(path("poisoned.stl"), bytes);
+  for (const int threads : {1, 3}) {
+    set_worker_threads(threads);
+    EXPECT_EQ(file_error([&] { read_stl(path("poisoned.stl")); }),
+              path("poisoned.stl") + ": byte 4500096: vertex 1 of triangle 90001 of 204800 is not finite")
+        << threads << " threads";
+  }
+  set_worker_threads(0);
 }
 
 TEST(StlErrors, NonNumberIsRefused) {
