@@ -44,7 +44,10 @@ class MeshBuilder {
 
   void add(const Eigen::Vector3d& normal, const Corners& corners) {
     if (options_.merge_equal_points) {
-      mesh_.triangles.push_back({equal_.add(corners[0]), equal_.add(corners[1]), equal_.add(corners[2])});
+      const std::array<int, 3> numbers{number(corners[0]), number(corners[1]), number(corners[2])};
+      mesh_.triangles.push_back(numbers);
+      last_corners_ = corners;
+      last_numbers_ = numbers;
     } else {
       const int first = static_cast<int>(mesh_.positions.size());
       mesh_.positions.insert(mesh_.positions.end(), corners.begin(), corners.end());
@@ -91,9 +94,21 @@ class MeshBuilder {
   }
 
  private:
+  // A corner's position number. Exporters write strips and fans, so a corner is more often than not one
+  // of the previous facet's: those are found by comparing bits (EqualPoints' equality), without a probe
+  // of the table.
+  int number(const Eigen::Vector3d& p) {
+    for (int k = 0; k < 3; ++k)
+      if (last_numbers_[k] >= 0 && std::memcmp(last_corners_[k].data(), p.data(), sizeof(double) * 3) == 0)
+        return last_numbers_[k];
+    return equal_.add(p);
+  }
+
   StlReadOptions options_;
   TriangleMesh mesh_;
   EqualPoints equal_;  // with merge_equal_points
+  Corners last_corners_;                      // the previous facet's, with merge_equal_points
+  std::array<int, 3> last_numbers_{-1, -1, -1};  // their numbers; -1 before the first facet
   std::vector<Eigen::Vector3d> normals_;
   bool any_normal_ = false;
 };
