@@ -17,11 +17,14 @@ namespace {
 const char* kHelp =
     "usage: cadnurbs fit-loop IN.stl -o CONTROL.obj [--surface LIMIT.(stl|obj|wrl|x3dv|ply)]\n"
     "                         [--control-vertices N] [--tolerance D] [--crease-angle DEG] [--levels K] [--weld TOL]\n"
+    "                         [--connectivity]\n"
     "       cadnurbs fit-loop CONTROL.obj --input IN.stl [--surface LIMIT] [--levels K]\n"
     "Fits a Loop subdivision surface to the triangles of IN: a control mesh by quadric decimation to N\n"
     "vertices (default 200) with the edges sharper than the crease angle (default 30 degrees) kept and\n"
     "tagged as creases, then control points solved by least squares so that the limit surface fits\n"
-    "IN both ways. --tolerance D then keeps more of IN's vertices where the surface stays farther\n"
+    "IN both ways. --connectivity then tries edge swaps and crease and corner tag toggles, keeps those\n"
+    "after which a local re-fit gets closer, and fits again (much slower; not with a tolerance).\n"
+    "--tolerance D then keeps more of IN's vertices where the surface stays farther\n"
     "than D, decimates and fits again, until it is within D (N is the first round's count).\n"
     "IN's vertices closer than TOL are welded first (default 1e-4 of the bounding-box diagonal).\n"
     "-o writes the control mesh with its tags (OBJ; docs/loop_control_obj.md); --surface the limit\n"
@@ -34,7 +37,7 @@ const char* kHelp =
 int run_fit_loop(const std::vector<std::string>& args) {
   const Arguments a = parse_arguments("fit-loop", args,
                                       {"output", "surface", "control-vertices", "tolerance", "crease-angle", "levels", "input", "weld"},
-                                      {"help"});
+                                      {"help", "connectivity"});
   if (a.has("help")) {
     std::cout << kHelp;
     return 0;
@@ -56,6 +59,9 @@ int run_fit_loop(const std::vector<std::string>& args) {
   request.weld_tolerance = a.number("weld", -1.0);
   if (a.has("weld") && !(request.weld_tolerance >= 0 && std::isfinite(request.weld_tolerance)))
     throw UsageError("--weld must be 0 or more");
+  request.improve_connectivity = a.has("connectivity");
+  if (request.improve_connectivity && (a.has("tolerance") || from_saved))
+    throw UsageError("--connectivity goes neither with --tolerance nor with a saved control mesh");
   request.levels = a.integer("levels", request.levels);
   if (request.levels < 1 || request.levels > 5) throw UsageError("--levels must be 1 to 5");
   for (const std::string option : {"output", "surface"}) {
@@ -106,6 +112,10 @@ int run_fit_loop(const std::vector<std::string>& args) {
                                               " at the fit's samples"
                                         : std::string())
               << "\n";
+  if (m.connectivity.candidates > 0)
+    std::cout << "connectivity: " << m.connectivity.candidates << " local re-fits, " << m.connectivity.swaps << " swaps, "
+              << m.connectivity.corner_toggles << " corner and " << m.connectivity.crease_toggles << " crease tag toggles kept; "
+              << (m.connectivity_kept ? "refitted" : "the refit was not better, the first fit kept") << "\n";
   std::cout << "limit surface (" << request.levels << " levels, " << m.limit.triangles.size()
             << " triangles) to input, two-sided: RMS " << m.limit_distance.rms << " " << unit << ", max "
             << m.limit_distance.max << " " << unit << "\n"

@@ -40,6 +40,22 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
     } else {
       const LoopControlMesh start = decimate_control_mesh(input, request.control_vertices, sharp_angle, &m.decimation);
       m.control = fit_loop_surface(input, start, options, &m.fit);
+      if (request.improve_connectivity) {
+        ConnectivityOptions moves;
+        moves.levels = request.levels;
+        const LoopControlMesh improved = improve_control_connectivity(input, m.control, moves, &m.connectivity);
+        LoopFitReport refit;
+        const LoopControlMesh refitted = fit_loop_surface(input, improved, options, &refit);
+        refit.iterations += m.fit.iterations;
+        // The moves were judged locally; the global fit has the last word.
+        m.connectivity_kept = refit.rms < m.fit.rms;
+        if (m.connectivity_kept) {
+          m.control = refitted;
+          m.fit = refit;
+        } else {
+          m.fit.iterations = refit.iterations;
+        }
+      }
     }
   }
   m.limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(m.control), request.levels), m.control.positions);

@@ -7,6 +7,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "analysis/loop_fit/loop_limit_patches.hpp"
 #include "analysis/loop_fit/triangle_projection.hpp"
 #include "analysis/sample_triangles.hpp"
 #include "analysis/subdivision/loop_limit_surface.hpp"
@@ -26,16 +27,14 @@ struct InputData {
   std::vector<Eigen::Vector3d> points, normals;
 };
 
-// Everything about one candidate control mesh that the local energy needs.
+// A candidate control mesh and the triangles at each of its vertices (for regions and rings).
 struct Candidate {
   LoopControlMesh mesh;
-  LoopLimitMesh limit;
   std::vector<std::vector<int>> vertex_triangles;
 };
 
-Candidate make_candidate(LoopControlMesh mesh, int levels) {
+Candidate make_candidate(LoopControlMesh mesh) {
   Candidate c;
-  c.limit = loop_limit_mesh(loop_topology(mesh), levels);
   c.vertex_triangles.assign(mesh.positions.size(), {});
   for (size_t t = 0; t < mesh.triangles.size(); ++t)
     for (const int v : mesh.triangles[t]) c.vertex_triangles[v].push_back(static_cast<int>(t));
@@ -73,28 +72,19 @@ class LocalFit {
   double energy(Candidate& c, const std::vector<int>& region, const std::vector<int>& data, const std::vector<int>& free,
                 std::vector<int>* feet) const {
     const int per_triangle = 1 << (2 * options_.levels);
+    // The region's limit patches from its own 1-ring: the map does not change with the positions.
+    const LoopLimitPatches patches = loop_limit_patches(loop_topology(c.mesh), c.vertex_triangles, region, options_.levels);
+    const LoopStencils& map = patches.limit_from_control;
     double e = 0;
     for (int round = 0; round <= (free.empty() ? 0 : options_.local_rounds); ++round) {
       // Limit triangles of the region at the current positions.
+      std::vector<Eigen::Vector3d> limit_points(static_cast<size_t>(map.rows()), Eigen::Vector3d::Zero());
+      for (long v = 0; v < map.rows(); ++v)
+        for (LoopStencils::InnerIterator s(map, v); s; ++s) limit_points[v] += s.value() * c.mesh.positions[s.col()];
       std::vector<K::Triangle_3> triangles;
-      std::vector<int> limit_index;  // limit triangle of each
-      std::vector<Eigen::Vector3d> limit_points;
-      std::map<int, int> point_of;  // limit vertex -> index in limit_points
-      auto limit_point = [&](int v) {
-        const auto [it, added] = point_of.emplace(v, static_cast<int>(limit_points.size()));
-        if (added) {
-          Eigen::Vector3d p = Eigen::Vector3d::Zero();
-          for (LoopStencils::InnerIterator s(c.limit.limit_from_control, v); s; ++s) p += s.value() * c.mesh.positions[s.col()];
-          limit_points.push_back(p);
-        }
-        return limit_points[it->second];
-      };
-      for (const int t : region)
-        for (int k = t * per_triangle; k < (t + 1) * per_triangle; ++k) {
-          const auto& tri = c.limit.level.triangles[k];
-          triangles.emplace_back(cg(limit_point(tri[0])), cg(limit_point(tri[1])), cg(limit_point(tri[2])));
-          limit_index.push_back(k);
-        }
+      triangles.reserve(patches.triangles.size());
+      for (const auto& tri : patches.triangles)
+        triangles.emplace_back(cg(limit_points[tri[0]]), cg(limit_points[tri[1]]), cg(limit_points[tri[2]]));
       TriangleTree tree(triangles.begin(), triangles.end());
       tree.accelerate_distance_queries();
 
@@ -104,15 +94,17 @@ class LocalFit {
       for (size_t i = 0; i < data.size(); ++i) {
         const Eigen::Vector3d& x = input_.points[data[i]];
         const auto [foot, primitive] = tree.closest_point_and_primitive(cg(x));
-        const int k = limit_index[static_cast<size_t>(primitive - triangles.begin())];
-        if (feet) (*feet)[i] = k / per_triangle;
+        const size_t k = static_cast<size_t>(primitive - triangles.begin());
+        if (feet) (*feet)[i] = region[k / per_triangle];
         e += (eig(foot) - x).squaredNorm();
-        const auto& tri = c.limit.level.triangles[k];
-        const Eigen::Vector3d a = limit_point(tri[0]), b = limit_point(tri[1]), d = limit_point(tri[2]);
+        const auto& tri = patches.triangles[k];
+        const Eigen::Vector3d& a = limit_points[tri[0]];
+        const Eigen::Vector3d& b = limit_points[tri[1]];
+        const Eigen::Vector3d& d = limit_points[tri[2]];
         Pair p;
         const Eigen::Vector3d bary = barycentric(eig(foot), a, b, d);
         for (int j = 0; j < 3; ++j)
-          for (LoopStencils::InnerIterator s(c.limit.limit_from_control, tri[j]); s; ++s)
+          for (LoopStencils::InnerIterator s(map, tri[j]); s; ++s)
             p.stencil.emplace_back(static_cast<int>(s.col()), bary[j] * s.value());
         p.target = x;
         p.normal = unit_normal(a, b, d);
@@ -120,18 +112,20 @@ class LocalFit {
       }
       // The other way: each limit triangle's centroid to the input (the same count for every
       // connectivity of the region, so energies compare).
-      for (size_t j = 0; j < triangles.size(); ++j) {
-        const auto& tri = c.limit.level.triangles[limit_index[j]];
-        const Eigen::Vector3d centroid = (limit_point(tri[0]) + limit_point(tri[1]) + limit_point(tri[2])) / 3;
+      for (const auto& tri : patches.triangles) {
+        const Eigen::Vector3d& a = limit_points[tri[0]];
+        const Eigen::Vector3d& b = limit_points[tri[1]];
+        const Eigen::Vector3d& d = limit_points[tri[2]];
+        const Eigen::Vector3d centroid = (a + b + d) / 3;
         const auto [foot, primitive] = input_.tree.closest_point_and_primitive(cg(centroid));
         e += (eig(foot) - centroid).squaredNorm();
         Pair p;
         for (int m = 0; m < 3; ++m)
-          for (LoopStencils::InnerIterator s(c.limit.limit_from_control, tri[m]); s; ++s)
+          for (LoopStencils::InnerIterator s(map, tri[m]); s; ++s)
             p.stencil.emplace_back(static_cast<int>(s.col()), s.value() / 3);
         p.target = eig(foot);
         p.normal = input_.face_normals[static_cast<size_t>(primitive - input_.triangles.begin())];
-        const Eigen::Vector3d surface_normal = unit_normal(limit_point(tri[0]), limit_point(tri[1]), limit_point(tri[2]));
+        const Eigen::Vector3d surface_normal = unit_normal(a, b, d);
         if (p.normal.dot(surface_normal) >= 0) pairs.push_back(std::move(p));
       }
       e += spring_weight_ * spring_energy(c, region_vertices(c, region));
@@ -252,13 +246,14 @@ LoopControlMesh improve_control_connectivity(const TriangleMesh& input_mesh, con
   }
 
   ConnectivityReport r;
-  Candidate current = make_candidate(fitted, options.levels);
+  Candidate current = make_candidate(fitted);
   const int triangle_count = static_cast<int>(fitted.triangles.size());
   const int per_triangle = 1 << (2 * options.levels);
   // Every data point's control triangle, from one projection onto the whole limit mesh.
   std::vector<std::vector<int>> data_of(triangle_count);
   {
-    const TriangleMesh surface = evaluate_limit_mesh(current.limit, current.mesh.positions);
+    const TriangleMesh surface =
+        evaluate_limit_mesh(loop_limit_mesh(loop_topology(current.mesh), options.levels), current.mesh.positions);
     std::vector<K::Triangle_3> triangles;
     for (const auto& t : surface.triangles)
       triangles.emplace_back(cg(surface.positions[t[0]]), cg(surface.positions[t[1]]), cg(surface.positions[t[2]]));
@@ -296,6 +291,7 @@ LoopControlMesh improve_control_connectivity(const TriangleMesh& input_mesh, con
     // Candidate moves from the current mesh (re-listed each sweep; a move made stale by an earlier one
     // in the same sweep is checked again before it is tried).
     const LoopEdges list_edges = loop_edges(loop_topology(current.mesh));
+    LoopEdges now = list_edges;  // the current mesh's edges, redone when a move is kept
     std::vector<std::pair<int, int>> candidates;  // (0 swap / 1 corner toggle / 2 crease toggle, edge or vertex)
     if (options.swaps)
       for (size_t e = 0; e < list_edges.ends.size(); ++e)
@@ -309,7 +305,6 @@ LoopControlMesh improve_control_connectivity(const TriangleMesh& input_mesh, con
     for (const auto& [kind, id] : candidates) {
       Move move;
       move.mesh = current.mesh;
-      const LoopEdges now = loop_edges(loop_topology(current.mesh));
       if (kind == 0 || kind == 2) {
         // The edge by its ends in the list it was found in; find it again in the current mesh.
         const auto [a, b] = list_edges.ends[id];
@@ -371,12 +366,7 @@ LoopControlMesh improve_control_connectivity(const TriangleMesh& input_mesh, con
         move.changed = {id};
       }
 
-      Candidate after;
-      try {
-        after = make_candidate(move.mesh, options.levels);
-      } catch (const std::invalid_argument&) {
-        continue;
-      }
+      Candidate after = make_candidate(std::move(move.mesh));
       const std::set<int> free_set = grow(after, move.changed, options.free_rings);
       std::vector<int> region = region_of(after, free_set);
       {
@@ -391,13 +381,18 @@ LoopControlMesh improve_control_connectivity(const TriangleMesh& input_mesh, con
       ++r.candidates;
       const double before = local.energy(current, region, data, {}, nullptr);
       std::vector<int> feet;
-      const double after_energy =
-          local.energy(after, region, data, std::vector<int>(free_set.begin(), free_set.end()), &feet);
+      double after_energy = INFINITY;
+      try {
+        after_energy = local.energy(after, region, data, std::vector<int>(free_set.begin(), free_set.end()), &feet);
+      } catch (const std::invalid_argument&) {
+        continue;  // the move made a mesh Loop's rules refuse
+      }
       if (!(after_energy < (1 - 1e-4) * before)) continue;
       // Keep it: the region's data points go to the triangles they now project onto.
       for (const int t : region) data_of[t].clear();
       for (size_t i = 0; i < data.size(); ++i) data_of[feet[i]].push_back(data[i]);
       current = std::move(after);
+      now = loop_edges(loop_topology(current.mesh));
       ++kept_this_sweep;
       (kind == 0 ? r.swaps : kind == 1 ? r.corner_toggles : r.crease_toggles)++;
     }

@@ -33,8 +33,10 @@ struct ConnectivityReport {
 // edge. Each sweep tries every swap, then every corner toggle, then every crease toggle, once, and
 // keeps a move when it lowers the local energy by 0.01 % or more; no more sweeps after one that keeps
 // none.
-// Cost: every try rebuilds the whole limit map and projects the region's samples (on the corpus's
-// tray, 200 control vertices: 2,288 tries, 870 s of CPU), so it is not part of fit-loop.
+// Cost: every try builds the limit map of its region only (loop_limit_patches), but projects the
+// region's samples both ways in each of its rounds (one before, local_rounds + 1 after), and the
+// projections are most of the time: on the corpus's tray, 200 control vertices, 2,291 tries took
+// about 1,000 s of CPU on a loaded machine, some 15 plain fits; so fit-loop runs it on request only.
 // Refuses (std::invalid_argument) an input or control mesh without triangles, levels outside 1..5.
 LoopControlMesh improve_control_connectivity(const TriangleMesh& input, const LoopControlMesh& fitted,
                                              const ConnectivityOptions& options, ConnectivityReport* report = nullptr);
