@@ -8,7 +8,7 @@ the open edges of the mesh at D (the compact form sewn and meshed, before and af
 
 usage: bench/simplify_table.py [--cadnurbs build/converters/cadnurbs] [--corpus ../shared/corpus]
                                [--library /tmp/kicad-step] [--per-family 2] [--extra 2]
-                               [--skip-above BYTES] [--out DIR]
+                               [--skip-above BYTES] [--out DIR] [--only FILE ...]
 Standard library only. Run it nice'd: nice -n 19 python3 bench/simplify_table.py
 """
 import argparse
@@ -20,7 +20,7 @@ import sys
 import time
 
 SUMMARY = re.compile(
-    r"simplified within (?P<d>\S+) \S+ \(faces moved by at most (?P<move>\S+), (?P<attempts>\d+) attempts?\): "
+    r"simplified within (?P<d>\S+) \S+ \(faces moved by at most (?P<move>\S+), (?P<attempts>\d+) attempts?(?:; \d+ repeated parts placed as copies first)?\): "
     r"(?P<knots>\d+) knots removed .*?control points (?P<before>\d+) -> (?P<after>\d+), certified deviation "
     r"(?P<dev>\S+) .*?meshed at \S+: (?P<open_before>\d+) open edges \((?P<len_before>\S+) \S+\) before, "
     r"(?P<open_after>\d+) open edges \((?P<len_after>\S+) \S+\) after, (?P<unshared>\d+) unshared")
@@ -109,6 +109,7 @@ def main():
     parser.add_argument("--extra", type=int, default=2)
     parser.add_argument("--skip-above", type=int, default=1_000_000, help="corpus files larger than this are left out")
     parser.add_argument("--out", default="/tmp/simplify_table")
+    parser.add_argument("--only", nargs="+", help="these files instead of the corpus and the library")
     a = parser.parse_args()
     os.makedirs(a.out, exist_ok=True)
     # A copy of the binary: the build folder's may be relinked by a build while the table runs.
@@ -119,8 +120,11 @@ def main():
         time.sleep(5)
     cadnurbs = os.path.join(a.out, "cadnurbs")
     shutil.copy2(a.cadnurbs, cadnurbs)
-    files, skipped = corpus_files(a.corpus, a.skip_above)
-    files += library_parts(a.library, a.per_family, a.extra)
+    if a.only:
+        files, skipped = a.only, []
+    else:
+        files, skipped = corpus_files(a.corpus, a.skip_above)
+        files += library_parts(a.library, a.per_family, a.extra)
     print("| file | D | control points | .x3dv bytes | certified deviation | moved at most | watertight (mesh at D) | s |")
     print("|---|---|---|---|---|---|---|---|")
     for path in files:

@@ -110,7 +110,7 @@ Scene simplify_certified(const std::string& in, const std::string& out, const Sc
             << s.knots.surfaces_changed << " surfaces, " << s.knots.curves_changed << " curves), control points "
             << s.knots.control_points_before << " -> " << s.knots.control_points_after << ", certified deviation "
             << number(s.certified_deviation) << unit << " (measured " << number(s.measured) << " + mesh "
-            << number(s.mesh_deviation) << "; curves " << number(s.knots.curve_deviation) << "), meshed at "
+            << number(s.mesh_deviation) << " + copies " << number(s.copies_moved) << "; curves " << number(s.knots.curve_deviation) << "), meshed at "
             << number(d) << ": " << open(s.open_before) << " before, " << open(s.open_after) << " after, "
             << s.unshared_after << " unshared edge uses\n";
   if (s.certified_deviation > d)

@@ -56,9 +56,10 @@ CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, 
 //    diagonal, and a file's own gaps add to the parting; so when the mesh at D of the simplified scene
 //    has lost watertightness (below), the move is divided by 8 and the removal redone, up to
 //    kSimplifyAttempts moves (D/8, D/64, D/512); if none keeps it, the scene is returned unchanged.
-//  - The deviation: the original faces meshed within D/4 (tessellate_to_deviation), measured against
-//    the simplified faces (measure_deviation, two-sided); simplified and original then lie within
-//    measured + that mesh's certified deviation of each other. 3D curves: sampled at equal parameters.
+//  - The deviation, face by face: every face knot removal changed, as it was, meshed within D/4
+//    (tessellate_to_deviation) and measured against itself simplified (measure_deviation, two-sided, the
+//    face alone); the two then lie within measured + that mesh's certified deviation of each other, and
+//    the copies placed first within τ/4 more. 3D curves: sampled at equal parameters.
 //  - Watertightness, before and after alike: the compact form (compact_scene at `written_tolerance`)
 //    with its edge ids forgotten, as a reader of the written file finds it, sewn (sew_faces at
 //    sewing_tolerance(diagonal, D)), meshed at D and welded (weld_exact); its open edges counted.
@@ -69,9 +70,10 @@ struct SimplifiedScene {
   int instanced = 0;               // copies of repeated parts placed before simplifying (instance_repeats)
   int attempts = 0;                // moves tried
   double max_move = 0;             // the move allowed (D/8, D/64 or D/512); 0: the scene is unchanged
-  double measured = 0;             // measure_deviation's overall maximum (faces)
-  double mesh_deviation = 0;       // certified deviation of the original's mesh it was measured on
-  double certified_deviation = 0;  // max(measured + mesh_deviation, knots.curve_deviation)
+  double measured = 0;             // measure_deviation's largest over the changed faces
+  double mesh_deviation = 0;       // largest certified deviation of their meshes before
+  double copies_moved = 0;         // τ/4 when copies were placed, else 0
+  double certified_deviation = 0;  // max(measured + mesh_deviation, knots.curve_deviation) + copies_moved
   EdgeCounts open_before, open_after;
   int unshared_before = 0, unshared_after = 0;  // edge uses the tessellator could not share
   // No edge use lost its edge and no non-manifold edge appeared; a closed mesh stayed closed, and an
