@@ -32,7 +32,10 @@ struct OrientReport {
 //   first reached with and the edges that then disagree are counted;
 // - each closed, orientable component turned outward: flipped whole when its signed volume (sum of the
 //   tetrahedra from one of its vertices) is negative. Open components keep their first triangle's winding.
-// Positions are unchanged. O(n) for n triangles (plus the small sorts of edge_sides).
+// Positions are unchanged. O(n) for n triangles (plus the small sorts of side_partners). The duplicate test,
+// the side partners and the flood are shared out to worker_threads() threads (vertex and triangle ranges);
+// the result does not depend on the thread count (a mesh with a non-orientable component is flooded again
+// in one thread, since its flips depend on the order it is walked in).
 // If component_of_triangle is given it receives each output triangle's component (0 .. components - 1,
 // numbered in order of their first triangles).
 // If partners_of_output is given it receives side_partners() of the returned mesh (for crease_normals, which

@@ -1,7 +1,7 @@
 #pragma once
-// How many threads the parallel stages of the normals pipeline (read_stl, crease_normals) use, and running
-// one task per thread. Each of those stages splits its work so that its result does not depend on the
-// count: one thread and many give the same bits.
+// How many threads the parallel stages of the normals pipeline (read_stl, side_partners, orient_faces,
+// crease_normals) use, and running one task per thread. Each of those stages splits its work so that its
+// result does not depend on the count: one thread and many give the same bits.
 #include <atomic>
 #include <cstddef>
 #include <exception>

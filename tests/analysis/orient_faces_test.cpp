@@ -6,13 +6,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <numbers>
+#include <random>
 
 #include "analysis/crease_normals.hpp"
 #include "analysis/weld_vertices.hpp"
+#include "core/worker_threads.hpp"
 #include "formats/stl/stl_reader.hpp"
 #include "weld_test_meshes.hpp"
 
@@ -129,8 +132,7 @@ TEST(OrientFaces, TwoDisjointCubesOneInsideOut) {
 // A strip of `segments` quads (two triangles each) around a circle, turned half a turn on the way: the
 // last quad joins the first with top and bottom exchanged. No orientation is consistent; flooding from
 // the first triangle leaves exactly one edge inconsistent (the strip's dual graph is one cycle).
-TEST(OrientFaces, MoebiusStripIsOneNonOrientableComponent) {
-  const int segments = 12;
+TriangleMesh moebius_strip(int segments) {
   TriangleMesh m;
   for (int i = 0; i < segments; ++i) {
     const double a = 2 * std::numbers::pi * i / segments;
@@ -147,6 +149,12 @@ TEST(OrientFaces, MoebiusStripIsOneNonOrientableComponent) {
     m.triangles.push_back({top, bottom, next_bottom});
     m.triangles.push_back({top, next_bottom, next_top});
   }
+  return m;
+}
+
+TEST(OrientFaces, MoebiusStripIsOneNonOrientableComponent) {
+  const int segments = 12;
+  const TriangleMesh m = moebius_strip(segments);
   OrientReport report;
   SidePartners partners;
   const TriangleMesh oriented = orient_faces(m, &report, nullptr, &partners);
@@ -270,6 +278,75 @@ TEST(OrientFaces, CorpusFilesOrientConsistentlyAndOutward) {
                 report.flipped_triangles, report.non_orientable_components, report.inconsistent_edges,
                 report.duplicate_triangles, report.non_manifold_edges, report.boundary_edges);
   }
+}
+
+
+// The duplicate test, the side partners and the flood are shared out to worker threads by vertex and
+// triangle ranges: any count gives the same mesh, report, components and partners. The triangles are
+// shuffled, so that each range holds many pieces of each component, and some turned over; one mesh is
+// orientable (the ranges' pieces joined), the other holds a Moebius strip too (flooded again in one range).
+TEST(OrientFaces, AnyThreadCountGivesTheSameResult) {
+  TriangleMesh orientable;
+  for (int i = 0; i < 3; ++i) {
+    TriangleMesh cube = welded_cube(1.0 + i);
+    for (auto& p : cube.positions) p.x() += 10 * i;
+    append(orientable, cube);
+  }
+  const int n = 40;  // an open grid of n x n quads
+  TriangleMesh grid;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) grid.positions.emplace_back(i, j, 50 + std::sin(0.3 * i + 0.2 * j));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const int a = i * (n + 1) + j;
+      grid.triangles.push_back({a, a + n + 1, a + n + 2});
+      grid.triangles.push_back({a, a + n + 2, a + 1});
+    }
+  grid.triangles.push_back({0, n + 2, static_cast<int>(grid.positions.size())});  // a fin on a diagonal: non-manifold
+  grid.positions.emplace_back(0, 0.5, 60);
+  append(orientable, grid);
+  TriangleMesh with_strip = orientable;
+  append(with_strip, moebius_strip(30));
+  for (TriangleMesh* m : {&orientable, &with_strip}) {
+    m->corner_normals.clear();
+    m->triangles.push_back(m->triangles[7]);  // a duplicate
+    std::mt19937 random(11);
+    std::shuffle(m->triangles.begin(), m->triangles.end(), random);
+    for (std::size_t t = 0; t < m->triangles.size(); t += 3) std::swap(m->triangles[t][0], m->triangles[t][1]);
+  }
+  for (const TriangleMesh* m : {&orientable, &with_strip}) {
+    set_worker_threads(1);
+    OrientReport one_report;
+    std::vector<int> one_component;
+    SidePartners one_partners;
+    const TriangleMesh one = orient_faces(*m, &one_report, &one_component, &one_partners);
+    EXPECT_EQ(one_report.duplicate_triangles, 1);
+    EXPECT_EQ(one_report.non_manifold_edges, 1);
+    EXPECT_EQ(one_report.components, m == &orientable ? 5 : 6);  // the fin is a component of its own
+    EXPECT_EQ(one_report.non_orientable_components, m == &orientable ? 0 : 1);
+    EXPECT_EQ(one_report.closed_components, 3);
+    EXPECT_GT(one_report.flipped_triangles, 0);
+    expect_partners_of(one_partners, one, "one thread");
+    for (const int threads : {2, 3, 7, 8}) {
+      set_worker_threads(threads);
+      OrientReport report;
+      std::vector<int> component;
+      SidePartners partners;
+      const TriangleMesh oriented = orient_faces(*m, &report, &component, &partners);
+      EXPECT_EQ(oriented.triangles, one.triangles) << threads << " threads";
+      EXPECT_EQ(component, one_component) << threads << " threads";
+      EXPECT_EQ(partners.partner, one_partners.partner) << threads << " threads";
+      EXPECT_EQ(partners.boundary_edges, one_partners.boundary_edges) << threads << " threads";
+      EXPECT_EQ(partners.non_manifold_edges, one_partners.non_manifold_edges) << threads << " threads";
+      EXPECT_EQ(report.components, one_report.components) << threads << " threads";
+      EXPECT_EQ(report.closed_components, one_report.closed_components) << threads << " threads";
+      EXPECT_EQ(report.flipped_triangles, one_report.flipped_triangles) << threads << " threads";
+      EXPECT_EQ(report.non_orientable_components, one_report.non_orientable_components) << threads << " threads";
+      EXPECT_EQ(report.inconsistent_edges, one_report.inconsistent_edges) << threads << " threads";
+      EXPECT_EQ(report.duplicate_triangles, one_report.duplicate_triangles) << threads << " threads";
+    }
+  }
+  set_worker_threads(0);
 }
 
 }  // namespace
