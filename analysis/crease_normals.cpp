@@ -141,15 +141,22 @@ CornerNormals crease_normals(const TriangleMesh& welded, double crease_angle_rad
     throw std::invalid_argument("crease_normals: side partners of " + std::to_string(partners->partner.size()) +
                                 " sides given for " + std::to_string(nt) + " triangles");
   out.corner_normal = smooth_corner_groups(welded, *partners, crease_angle_radians, r).into_class_numbers();
-  int groups = 0;
-  for (const int g : out.corner_normal) groups = std::max(groups, g + 1);
+  const int workers = worker_threads();
+  std::vector<int> groups_seen(workers, 0);  // each worker's highest group number + 1 in its corners
+  on_workers(workers, [&](int w) {
+    const auto [begin, end] = worker_range(out.corner_normal.size(), w, workers);
+    for (size_t c = begin; c < end; ++c) groups_seen[w] = std::max(groups_seen[w], out.corner_normal[c] + 1);
+  });
+  const int groups = *std::max_element(groups_seen.begin(), groups_seen.end());
   r.distinct_normals = groups;
 
-  // Each group's weighted sum, in increasing order of corners (its first corner starts it: 0 + x). The
-  // groups are shared out in ranges, each worker going through all triangles for the corners of its own,
-  // so that every sum is made in the same order as by one thread.
+  // Each group's weighted sum, in increasing order of corners (its first corner starts it: 0 + x), then
+  // divided by its length; a sum of length 0 marks the group cancelled. The groups are shared out in
+  // ranges, each worker going through all triangles for the corners of its own, so that every sum is made
+  // in the same order as by one thread.
   out.normals.assign(static_cast<size_t>(groups), Eigen::Vector3d::Zero());
-  const int workers = worker_threads();
+  std::vector<char> cancelled(static_cast<size_t>(groups), 0);
+  std::vector<char> cancelled_seen(workers, 0);
   on_workers(workers, [&](int w) {
     const auto [first_group, end_group] = worker_range(static_cast<size_t>(groups), w, workers);
     auto mine = [&](size_t c) {
@@ -165,26 +172,28 @@ CornerNormals crease_normals(const TriangleMesh& welded, double crease_angle_rad
         out.normals[out.corner_normal[3 * t + k]] += weight * face_t;
       }
     }
+    for (size_t g = first_group; g < end_group; ++g) {
+      Eigen::Vector3d& normal = out.normals[g];
+      const double length = normal.norm();
+      cancelled[g] = !(length > 0);
+      cancelled_seen[w] |= cancelled[g];
+      if (length > 0) normal /= length;
+    }
   });
-  std::vector<bool> cancelled(static_cast<size_t>(groups), false);
-  for (int g = 0; g < groups; ++g) {
-    Eigen::Vector3d& normal = out.normals[g];
-    const double length = normal.norm();
-    cancelled[g] = !(length > 0);
-    if (length > 0) normal /= length;
-  }
   // A cancelled group's corners each take their own face's normal: the first corner in the group's slot,
   // the others in new slots.
-  std::vector<bool> slot_used(static_cast<size_t>(groups), false);
-  for (size_t c = 0; c < 3 * nt; ++c) {
-    const int g = out.corner_normal[c];
-    if (!cancelled[g]) continue;
-    if (!slot_used[g]) {
-      slot_used[g] = true;
-      out.normals[g] = unit_face_normal(welded, c / 3);
-    } else {
-      out.corner_normal[c] = static_cast<int>(out.normals.size());
-      out.normals.push_back(unit_face_normal(welded, c / 3));
+  if (std::find(cancelled_seen.begin(), cancelled_seen.end(), 1) != cancelled_seen.end()) {
+    std::vector<char> slot_used(static_cast<size_t>(groups), 0);
+    for (size_t c = 0; c < 3 * nt; ++c) {
+      const int g = out.corner_normal[c];
+      if (!cancelled[g]) continue;
+      if (!slot_used[g]) {
+        slot_used[g] = 1;
+        out.normals[g] = unit_face_normal(welded, c / 3);
+      } else {
+        out.corner_normal[c] = static_cast<int>(out.normals.size());
+        out.normals.push_back(unit_face_normal(welded, c / 3));
+      }
     }
   }
   if (report) *report = r;
