@@ -21,7 +21,7 @@ struct BucketEntry {
 // reorder. The vertices are shared out to worker_threads() threads in ranges (each thread goes through
 // all triangles twice and keeps the entries of its own range), so a bucket is always visited whole by one
 // thread, vertices of one range in increasing order; worker is that thread's number, 0 .. worker_threads()
-// - 1, for the visit's own counts. Memory: an int per vertex and a value per item.
+// - 1, for the visit's own counts. Memory: two ints per vertex and a value per item.
 template <class Entry, class Visit>
 void visit_vertex_buckets(std::size_t vertex_count, std::size_t triangle_count, int per_triangle, Entry entry,
                           Visit visit) {
