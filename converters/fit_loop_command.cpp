@@ -22,7 +22,8 @@ const char* kHelp =
     "Fits a Loop subdivision surface to the triangles of IN: a control mesh by quadric decimation to N\n"
     "vertices (default 200) with the edges sharper than the crease angle (default 30 degrees) kept and\n"
     "tagged as creases, then control points solved by least squares so that the limit surface fits\n"
-    "IN both ways. --connectivity then tries edge swaps and crease and corner tag toggles, keeps those\n"
+    "IN both ways. A plain quadric decimation to as many vertices, tagged where it is sharp itself, is\n"
+    "fitted too, and kept when its fit is closer both in RMS and max. --connectivity then tries edge swaps and crease and corner tag toggles, keeps those\n"
     "after which a local re-fit gets closer, and fits again (much slower; not with a tolerance).\n"
     "--tolerance D then keeps more of IN's vertices where the surface stays farther\n"
     "than D, decimates and fits again, until it is within D (N is the first round's count).\n"
@@ -101,17 +102,24 @@ int run_fit_loop(const std::vector<std::string>& args) {
   }
   const std::string unit = scene.unit.name;
   std::cout << mesh_path << ": " << m.input_triangles << " triangles, " << m.input_vertices << " welded vertices\n";
-  if (!from_saved)
+  if (!from_saved) {
+    const DecimationReport& d = m.starts.decimation;
     std::cout << "control mesh: " << m.control.positions.size() << " vertices, " << m.control.triangles.size()
               << " triangles, " << m.control.crease_edges.size() << " crease edges, " << m.control.corner_vertices.size()
-              << " tagged corners (" << m.decimation.sharp_input_edges << " sharp input edges, "
-              << m.decimation.locked_corners << " corners locked, " << m.decimation.skipped_triangles
-              << " non-manifold triangles left out of the decimation); " << m.fit.iterations << " solves"
+              << " tagged corners (" << d.sharp_input_edges << " sharp input edges, " << d.locked_corners
+              << " corners locked, " << d.skipped_triangles << " non-manifold triangles left out of the decimation); "
+              << m.fit.iterations << " solves"
               << (request.tolerance > 0 ? ", " + std::to_string(m.rounds) + " rounds: " +
                                               (m.tolerance_met ? "within " : "NOT within ") + a.value("tolerance") +
                                               " at the fit's samples"
                                         : std::string())
               << "\n";
+    if (request.tolerance <= 0)
+      std::cout << "start: " << (m.starts.plain_start_kept ? "the plain quadric decimation, tagged at its own sharp edges"
+                                                          : "the decimation that keeps the input's sharp edges")
+              << " (RMS at the fit's samples from the feature-keeping one " << m.starts.feature_start.rms << " "
+              << unit << ", from the plain one " << m.starts.plain_start.rms << " " << unit << ")\n";
+  }
   if (m.connectivity.candidates > 0)
     std::cout << "connectivity: " << m.connectivity.candidates << " local re-fits, " << m.connectivity.swaps << " swaps, "
               << m.connectivity.corner_toggles << " corner and " << m.connectivity.crease_toggles << " crease tag toggles kept; "

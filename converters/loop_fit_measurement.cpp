@@ -33,13 +33,14 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
     if (request.tolerance > 0) {
       LoopToleranceReport rounds;
       m.control = fit_loop_to_tolerance(input, request.control_vertices, sharp_angle, request.tolerance, options, &rounds);
-      m.decimation = rounds.decimation;
-      m.fit = rounds.fit;
+      m.starts.decimation = rounds.decimation;
+      m.starts.feature_start = m.fit = rounds.fit;
       m.rounds = rounds.rounds;
       m.tolerance_met = rounds.met;
     } else {
-      const LoopControlMesh start = decimate_control_mesh(input, request.control_vertices, sharp_angle, &m.decimation);
-      m.control = fit_loop_surface(input, start, options, &m.fit);
+      m.control = fit_loop_two_starts(input, request.control_vertices, sharp_angle, options, &m.starts);
+      m.fit = kept_fit(m.starts);
+      m.fit.iterations = m.starts.feature_start.iterations + m.starts.plain_start.iterations;
       if (request.improve_connectivity) {
         ConnectivityOptions moves;
         moves.levels = request.levels;

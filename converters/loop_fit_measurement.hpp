@@ -4,9 +4,8 @@
 // decimation with as many vertices (the thing a user would otherwise publish).
 #include <string>
 
-#include "analysis/loop_fit/decimate_control_mesh.hpp"
-#include "analysis/loop_fit/fit_loop_surface.hpp"
 #include "analysis/loop_fit/fit_loop_to_tolerance.hpp"
+#include "analysis/loop_fit/fit_loop_two_starts.hpp"
 #include "analysis/loop_fit/improve_control_connectivity.hpp"
 #include "analysis/measure_deviation.hpp"
 
@@ -34,8 +33,9 @@ struct LoopFitMeasure {
   int input_vertices = 0, input_triangles = 0;  // after welding
   LoopControlMesh control;
   TriangleMesh limit;                 // `levels` refinements, vertices at their limit points
-  DecimationReport decimation;
-  LoopFitReport fit;                  // the last fit's (its iterations: all fits')
+  LoopTwoStartsReport starts;         // the decimation and the fits from both starts (with a tolerance: the
+                                      // last round's decimation and fit, one start only)
+  LoopFitReport fit;                  // the fit kept last (its iterations: all fits')
   ConnectivityReport connectivity;    // the moves tried and kept (none tried: not run)
   bool connectivity_kept = false;     // the refit after the moves beat the fit before them, and is the result
   int rounds = 1;                     // decimate-and-fit rounds (more with a tolerance)

@@ -9,8 +9,10 @@
 
 #include "analysis/loop_fit/decimate_control_mesh.hpp"
 #include "analysis/loop_fit/fit_loop_surface.hpp"
+#include "analysis/loop_fit/fit_loop_two_starts.hpp"
 #include "analysis/loop_fit/improve_control_connectivity.hpp"
 #include "analysis/loop_fit/loop_limit_patches.hpp"
+#include "analysis/loop_fit/tag_sharp_edges.hpp"
 #include "analysis/subdivision/loop_limit_surface.hpp"
 #include "analysis/weld_vertices.hpp"
 #include "converters/loop_fit_measurement.hpp"
@@ -81,6 +83,51 @@ TEST(DecimateControlMesh, BoxKeepsItsCornersAndTaggedEdges) {
     length += (control.positions[a] - control.positions[b]).norm();
   }
   EXPECT_NEAR(length, 280.0, 1e-9);
+}
+
+// A box of 2 x 2 quads a face: its 12 edges, split in two, are the creases; the face diagonals and the
+// quads' own edges are flat; no vertex has exactly two sharp edges that turn (corners have three).
+TEST(TagSharpEdges, BoxEdgesAreCreasesAndNothingElse) {
+  const TriangleMesh box = gridded_box(2);
+  const LoopControlMesh tagged = tag_sharp_edges(box, 30 * M_PI / 180);
+  EXPECT_EQ(tagged.positions, box.positions);
+  EXPECT_EQ(tagged.crease_edges.size(), 24u);
+  for (const auto& [a, b] : tagged.crease_edges) {
+    EXPECT_LT(a, b);
+    const Eigen::Vector3d m = (box.positions[a] + box.positions[b]) / 2;
+    EXPECT_EQ(((m.cwiseAbs() - kHalf).array().abs() < 1e-12).count(), 2);  // on two faces' planes: a box edge
+  }
+  EXPECT_TRUE(tagged.corner_vertices.empty());
+}
+
+// Two triangles folded along their shared edge by 31 degrees: a crease at 30, none at 32; the square's
+// four boundary corners (two boundary edges at right angles) are tagged corners, the midpoint of a
+// straight boundary run is not.
+TEST(TagSharpEdges, FoldAngleAndBoundaryTurns) {
+  const double fold = 31 * M_PI / 180;
+  TriangleMesh sheet;
+  sheet.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  // Lift corner 3 so that triangle (1, 3, 2) turns by `fold` about the diagonal 1-2.
+  const Eigen::Vector3d mid(0.5, 0.5, 0), out = Eigen::Vector3d(0.5, 0.5, 0);
+  sheet.positions[3] = mid + std::cos(fold) * out + std::sin(fold) * out.norm() * Eigen::Vector3d::UnitZ();
+  sheet.triangles = {{0, 1, 2}, {1, 3, 2}};
+  const LoopControlMesh at30 = tag_sharp_edges(sheet, 30 * M_PI / 180);
+  ASSERT_EQ(at30.crease_edges.size(), 1u);
+  EXPECT_EQ(at30.crease_edges[0], (std::array<int, 2>{1, 2}));
+  EXPECT_TRUE(tag_sharp_edges(sheet, 32 * M_PI / 180).crease_edges.empty());
+  // Vertices 1 and 2 have three sharp edges (two boundary, the crease): corners untagged.
+  EXPECT_EQ(at30.corner_vertices, (std::vector<int>{0, 3}));
+
+  TriangleMesh flat;  // a unit square with a vertex in the middle of its lower side
+  flat.positions = {{0, 0, 0}, {0.5, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  flat.triangles = {{0, 1, 4}, {1, 3, 4}, {1, 2, 3}};
+  const LoopControlMesh square = tag_sharp_edges(flat, 30 * M_PI / 180);
+  EXPECT_TRUE(square.crease_edges.empty());
+  EXPECT_EQ(square.corner_vertices, (std::vector<int>{0, 2, 3, 4}));
+  TriangleMesh out_of_range;
+  out_of_range.positions = {{0, 0, 0}};
+  out_of_range.triangles = {{0, 0, 1}};
+  EXPECT_THROW(tag_sharp_edges(out_of_range, 0.5), std::invalid_argument);
 }
 
 TEST(FitLoopSurface, BoxStaysABoxWithSharpEdges) {
@@ -271,6 +318,28 @@ INSTANTIATE_TEST_SUITE_P(Parts, LoopFitAgainstQuadric,
                                            CADNURBS_SHARED_DIR "/corpus/stl/fan.stl",
                                            CADNURBS_SHARED_DIR "/corpus/stl/featuretype.STL",
                                            CADNURBS_SHARED_DIR "/corpus/stl/plate_holes.STL"));
+
+// Both starts are fitted at the same vertex count; the plain one is kept only when it has the lower RMS
+// at the fit's samples and no higher max; the returned control mesh is the kept fit's.
+TEST(FitLoopTwoStarts, KeepsTheFitWithTheLowerRms) {
+  const TriangleMesh part = weld_vertices(read_stl(CADNURBS_SHARED_DIR "/corpus/stl/plate_holes.STL"), 0.01);
+  LoopTwoStartsReport report;
+  const LoopControlMesh fitted = fit_loop_two_starts(part, 120, 30 * M_PI / 180, {}, &report);
+  EXPECT_EQ(fitted.positions.size(), 120u);
+  EXPECT_GT(report.feature_start.iterations, 0);
+  EXPECT_GT(report.plain_start.iterations, 0);
+  EXPECT_NE(report.feature_start.rms, report.plain_start.rms);
+  EXPECT_EQ(report.plain_start_kept,
+            report.plain_start.rms < report.feature_start.rms && report.plain_start.max <= report.feature_start.max);
+  EXPECT_EQ(kept_fit(report).rms, report.plain_start_kept ? report.plain_start.rms : report.feature_start.rms);
+  // Refitting the returned mesh starts where the kept fit ended: its first round measures that RMS.
+  LoopFitOptions once;
+  once.max_iterations = 1;
+  LoopFitReport again;
+  fit_loop_surface(part, fitted, once, &again);
+  EXPECT_NEAR(again.rms, kept_fit(report).rms, 1e-9 * kept_fit(report).rms);
+  EXPECT_THROW(fit_loop_two_starts(part, 120, -1, {}, nullptr), std::invalid_argument);
+}
 
 TEST(FitLoopToTolerance, KeepsVerticesUntilWithin) {
   const TriangleMesh part = read_stl(CADNURBS_SHARED_DIR "/corpus/stl/plate_holes.STL");
