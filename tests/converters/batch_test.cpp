@@ -165,10 +165,11 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunRedoesOnlyAL
     EXPECT_EQ(fs::exists(out + "/" + input + ".x3dv"), good) << input;
     EXPECT_TRUE(fs::exists(out + "/" + input + ".json")) << input;
   }
-  // The part redone below ends by its wall-time or its CPU-time limit, whichever the load lets come first
-  // (both are 20 s): its line is the one line of the report a rerun may change.
+  // The part redone below ends by a limit, whichever the load lets come first: the wall-time or CPU-time
+  // limit (20 s), or the read's wall (18 s, then naming the face it was converting, which depends on
+  // the load too): its line is the one line of the report a rerun may change.
   auto without_slow = [](std::string report) {
-    const size_t at = report.find("- slow.stp: exceeded 20 s");
+    const size_t at = report.find("- slow.stp: exceeded ");
     if (at != std::string::npos) report.erase(at, report.find('\n', at) - at);
     return report;
   };
