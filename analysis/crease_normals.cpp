@@ -5,7 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "analysis/edge_sides.hpp"
+#include "analysis/side_partners.hpp"
 #include "core/triangle_normal.hpp"
 #include "core/union_find.hpp"
 #include "core/worker_threads.hpp"

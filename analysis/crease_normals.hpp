@@ -1,6 +1,6 @@
 #pragma once
 // Smoothing normals with sharp creases kept: VRML's creaseAngle on an indexed triangle mesh.
-#include "analysis/edge_sides.hpp"
+#include "analysis/side_partners.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace cadnurbs {

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <utility>
 
-#include "analysis/edge_sides.hpp"
+#include "analysis/side_partners.hpp"
 #include "analysis/vertex_buckets.hpp"
 #include "core/worker_threads.hpp"
 

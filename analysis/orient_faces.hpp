@@ -3,7 +3,7 @@
 // closed surfaces face outward. An STL file's winding is whatever its exporter wrote; this repairs it.
 #include <vector>
 
-#include "analysis/edge_sides.hpp"
+#include "analysis/side_partners.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace cadnurbs {

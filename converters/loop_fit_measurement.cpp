@@ -62,7 +62,12 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
   m.limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(m.control), request.levels), m.control.positions);
   m.limit_distance = mesh_distance(m.limit, input).overall;
 
-  m.qem = as_triangle_mesh(decimate_control_mesh(input, static_cast<int>(m.control.positions.size()), -1));
+  // The two starts made this decimation already (same count, nothing kept) unless a tolerance or a
+  // saved control mesh took their place.
+  const int count = static_cast<int>(m.control.positions.size());
+  m.qem = static_cast<int>(m.starts.plain_decimation.positions.size()) == count
+              ? m.starts.plain_decimation
+              : as_triangle_mesh(decimate_control_mesh(input, count, -1));
   m.qem_distance = mesh_distance(m.qem, input).overall;
 
   m.control_floats = 3L * static_cast<long>(m.control.positions.size());

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "analysis/loop_fit/turn_angle.hpp"
+
 namespace cadnurbs {
 
 namespace {
@@ -24,13 +26,6 @@ struct DoubleTraits : OpenMesh::DefaultTraits {
 using Mesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 
 Eigen::Vector3d eig(const Mesh::Point& p) { return {p[0], p[1], p[2]}; }
-
-// Angle between the directions of a vertex's two sharp edges, as a turn (0 = straight on).
-double turn_angle(const Mesh& mesh, Mesh::VertexHandle v, Mesh::VertexHandle a, Mesh::VertexHandle b) {
-  const Eigen::Vector3d in = (eig(mesh.point(v)) - eig(mesh.point(a))).normalized();
-  const Eigen::Vector3d out = (eig(mesh.point(b)) - eig(mesh.point(v))).normalized();
-  return std::acos(std::clamp(in.dot(out), -1.0, 1.0));
-}
 
 // A half-edge collapse v0 -> v1 merges edge v0-vl into v1-vl (and v0-vr into v1-vr); OpenMesh keeps one
 // edge of each pair, with its own status. This module passes a crease tag on to the survivor, so that a
@@ -110,7 +105,8 @@ LoopControlMesh decimate_control_mesh(const TriangleMesh& welded, int target_ver
       // Vertices with 3+ sharp edges are corners by themselves and the quadrics keep them where they
       // are (locking them too would stop the decimation early on coarse CAD tessellations, where
       // every hole's rim has many); a crease that turns sharply has to be locked to stay a corner.
-      const bool corner = ends.size() == 2 && turn_angle(mesh, v, ends[0], ends[1]) >= sharp_angle;
+      const bool corner =
+          ends.size() == 2 && turn_angle(eig(mesh.point(ends[0])), eig(mesh.point(v)), eig(mesh.point(ends[1]))) >= sharp_angle;
       mesh.property(turning_corner, v) = corner;
       if (corner) {
         mesh.status(v).set_locked(true);

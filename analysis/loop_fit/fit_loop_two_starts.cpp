@@ -16,7 +16,8 @@ LoopControlMesh fit_loop_two_starts(const TriangleMesh& welded, int target_verti
 
   const int reached = static_cast<int>(feature_start.positions.size());
   const LoopControlMesh plain = decimate_control_mesh(welded, reached, -1, nullptr, keep);
-  const LoopControlMesh plain_start = tag_sharp_edges({plain.positions, plain.triangles, {}}, sharp_angle);
+  r.plain_decimation = {plain.positions, plain.triangles, {}};
+  const LoopControlMesh plain_start = tag_sharp_edges(r.plain_decimation, sharp_angle);
   const LoopControlMesh plain_fit = fit_loop_surface(welded, plain_start, options, &r.plain_start);
 
   r.plain_start_kept = r.plain_start.rms < r.feature_start.rms && r.plain_start.max <= r.feature_start.max;

@@ -14,6 +14,7 @@ struct LoopTwoStartsReport {
   LoopFitReport feature_start;     // the fit from it
   LoopFitReport plain_start;       // the fit from the plain decimation, tagged by tag_sharp_edges
   bool plain_start_kept = false;   // its RMS at the fit's samples was lower and its max no higher
+  TriangleMesh plain_decimation;   // the plain start before tagging: what a user would publish instead
 };
 
 // Takes a welded mesh, the vertex target, the sharp angle (radians, >= 0), fit options, and input

@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "analysis/loop_fit/turn_angle.hpp"
+
 namespace cadnurbs {
 
 LoopControlMesh tag_sharp_edges(const TriangleMesh& mesh, double sharp_angle) {
@@ -52,11 +54,8 @@ LoopControlMesh tag_sharp_edges(const TriangleMesh& mesh, double sharp_angle) {
   }
   for (int v = 0; v < n; ++v) {
     if (sharp_ends[v].size() != 2) continue;
-    const Eigen::Vector3d in = mesh.positions[v] - mesh.positions[sharp_ends[v][0]];
-    const Eigen::Vector3d out_direction = mesh.positions[sharp_ends[v][1]] - mesh.positions[v];
-    if (in.norm() == 0 || out_direction.norm() == 0) continue;
-    const double turn = std::acos(std::clamp(in.normalized().dot(out_direction.normalized()), -1.0, 1.0));
-    if (turn >= sharp_angle) out.corner_vertices.push_back(v);
+    if (turn_angle(mesh.positions[sharp_ends[v][0]], mesh.positions[v], mesh.positions[sharp_ends[v][1]]) >= sharp_angle)
+      out.corner_vertices.push_back(v);
   }
   return out;
 }

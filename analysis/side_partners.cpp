@@ -1,4 +1,4 @@
-#include "analysis/edge_sides.hpp"
+#include "analysis/side_partners.hpp"
 
 #include <algorithm>
 #include <cstdint>
