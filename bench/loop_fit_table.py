@@ -3,7 +3,7 @@
 `cadnurbs fit-loop IN -o CONTROL.obj --control-vertices 200 [--connectivity]` on each part, one after the
 other. Prints a markdown table: input triangles, control vertices, RMS and max two-sided distance of
 the fitted limit surface and of the quadric decimation with as many vertices, their ratios (the issue
-asks RMS <= 0.5 and max <= 1), which of fit_loop_two_starts' starts was kept, and the CPU and wall seconds of each run.
+asks RMS <= 0.5 and max <= 1), which of fit_loop_best_start's starts was kept, and the CPU and wall seconds of each run.
 
 usage: bench/loop_fit_table.py [--connectivity] [--cadnurbs BINARY] [PART...]
 (default binary: build/converters/cadnurbs, copied first since the build folder's may be relinked
@@ -41,12 +41,12 @@ def fit(binary, part, folder, connectivity):
     control = re.search(r"control mesh: (\d+) vertices", out)
     limit = re.search(r"limit surface .* RMS " + number + r" \S+, max " + number, out)
     qem = re.search(r"quadric decimation .* RMS " + number + r" \S+, max " + number, out)
-    start = re.search(r"^start: the (plain|decimation)", out, re.M)
+    start = re.search(r"^start kept: (\w+)", out, re.M)
     return {
         "triangles": int(triangles.group(1)), "control": int(control.group(1)),
         "rms": float(limit.group(1)), "max": float(limit.group(2)),
         "qem_rms": float(qem.group(1)), "qem_max": float(qem.group(2)),
-        "start": {"plain": "plain, tagged", "decimation": "features kept"}[start.group(1)] if start else "",
+        "start": {"features": "features kept", "plain": "plain, tagged", "guarded": "guarded, balanced"}[start.group(1)] if start else "",
         "wall": wall, "cpu": (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime),
     }
 

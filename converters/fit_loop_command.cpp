@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "analysis/scene_triangles.hpp"
+#include "core/number_format.hpp"
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
 #include "converters/file_formats.hpp"
@@ -22,8 +23,10 @@ const char* kHelp =
     "Fits a Loop subdivision surface to the triangles of IN: a control mesh by quadric decimation to N\n"
     "vertices (default 200) with the edges sharper than the crease angle (default 30 degrees) kept and\n"
     "tagged as creases, then control points solved by least squares so that the limit surface fits\n"
-    "IN both ways. A plain quadric decimation to as many vertices, tagged where it is sharp itself, is\n"
-    "fitted too, and kept when its fit is closer both in RMS and max. --connectivity then tries edge\n"
+    "IN both ways. Two more starts are fitted at as many vertices: a plain quadric decimation tagged\n"
+    "where it is sharp itself, and one under the smallest guard on the removed vertices' distance that\n"
+    "reaches the count, fitted with both sides weighted by area; a later start is kept when its limit\n"
+    "surface is closer to IN both in RMS and max. --connectivity then tries edge\n"
     "swaps and crease and corner tag toggles, keeps those after which a local re-fit gets closer, and\n"
     "fits again (much slower; not with a tolerance).\n"
     "--tolerance D (first start only) keeps more of IN's vertices where the surface stays farther\n"
@@ -115,11 +118,19 @@ int run_fit_loop(const std::vector<std::string>& args) {
                                               " at the fit's samples"
                                         : std::string())
               << "\n";
-    if (request.tolerance <= 0)
-      std::cout << "start: " << (m.starts.plain_start_kept ? "the plain quadric decimation, tagged at its own sharp edges"
-                                                          : "the decimation that keeps the input's sharp edges")
-              << " (RMS at the fit's samples from the feature-keeping one " << m.starts.feature_start.rms << " "
-              << unit << ", from the plain one " << m.starts.plain_start.rms << " " << unit << ")\n";
+    if (request.tolerance <= 0) {
+      const LoopStartsReport& st = m.starts;
+      auto figures = [&](const LoopStartFit& f) {
+        return message_number(f.distance.rms) + " / " + message_number(f.distance.max) + " " + unit;
+      };
+      const char* kept = st.kept == LoopStart::guarded ? "guarded" : st.kept == LoopStart::plain ? "plain" : "features";
+      std::cout << "start kept: " << kept << " (limit surface to input, two-sided RMS / max, from the start that keeps the "
+                << "input's sharp edges " << figures(st.features) << "; from the plain quadric decimation "
+                << figures(st.plain) << "; from the quadric decimation "
+                << (st.guard > 0 ? "that leaves no input vertex farther than " + message_number(st.guard) + " " + unit
+                                 : std::string("(no distance guard reached the count)"))
+                << ", fitted with both sides weighted by area, " << figures(st.guarded) << ")\n";
+    }
   }
   if (m.connectivity.candidates > 0)
     std::cout << "connectivity: " << m.connectivity.candidates << " local re-fits, " << m.connectivity.swaps << " swaps, "

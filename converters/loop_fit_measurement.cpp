@@ -34,19 +34,21 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
       LoopToleranceReport rounds;
       m.control = fit_loop_to_tolerance(input, request.control_vertices, sharp_angle, request.tolerance, options, &rounds);
       m.starts.decimation = rounds.decimation;
-      m.starts.feature_start = m.fit = rounds.fit;
+      m.starts.features.fit = m.fit = rounds.fit;
       m.rounds = rounds.rounds;
       m.tolerance_met = rounds.met;
     } else {
-      m.control = fit_loop_two_starts(input, request.control_vertices, sharp_angle, options, &m.starts);
-      m.fit = kept_fit(m.starts);
-      m.fit.iterations = m.starts.feature_start.iterations + m.starts.plain_start.iterations;
+      m.control = fit_loop_best_start(input, request.control_vertices, sharp_angle, options, &m.starts);
+      m.fit = kept_start(m.starts).fit;
+      m.fit.iterations = m.starts.features.fit.iterations + m.starts.plain.fit.iterations + m.starts.guarded.fit.iterations;
       if (request.improve_connectivity) {
         ConnectivityOptions moves;
         moves.levels = request.levels;
         const LoopControlMesh improved = improve_control_connectivity(input, m.control, moves, &m.connectivity);
         LoopFitReport refit;
-        const LoopControlMesh refitted = fit_loop_surface(input, improved, options, &refit);
+        LoopFitOptions refit_options = options;  // the kept start's weighting, so the RMS compare alike
+        refit_options.balance_sides = m.starts.kept == LoopStart::guarded;
+        const LoopControlMesh refitted = fit_loop_surface(input, improved, refit_options, &refit);
         refit.iterations += m.fit.iterations;
         // The moves were judged locally; the global fit has the last word.
         m.connectivity_kept = refit.rms < m.fit.rms;
@@ -60,9 +62,12 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
     }
   }
   m.limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(m.control), request.levels), m.control.positions);
-  m.limit_distance = mesh_distance(m.limit, input).overall;
+  // The starts measured the kept fit already, unless a tolerance, a saved control mesh or kept
+  // connectivity moves took its place.
+  const bool measured = !request.saved_control && request.tolerance <= 0 && !m.connectivity_kept;
+  m.limit_distance = measured ? kept_start(m.starts).distance : mesh_distance(m.limit, input).overall;
 
-  // The two starts made this decimation already (same count, nothing kept) unless a tolerance or a
+  // The starts made this decimation already (same count, nothing kept) unless a tolerance or a
   // saved control mesh took their place.
   const int count = static_cast<int>(m.control.positions.size());
   m.qem = static_cast<int>(m.starts.plain_decimation.positions.size()) == count

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "analysis/loop_fit/fit_loop_to_tolerance.hpp"
-#include "analysis/loop_fit/fit_loop_two_starts.hpp"
+#include "analysis/loop_fit/fit_loop_best_start.hpp"
 #include "analysis/loop_fit/improve_control_connectivity.hpp"
 #include "analysis/measure_deviation.hpp"
 
@@ -33,7 +33,7 @@ struct LoopFitMeasure {
   int input_vertices = 0, input_triangles = 0;  // after welding
   LoopControlMesh control;
   TriangleMesh limit;                 // `levels` refinements, vertices at their limit points
-  LoopTwoStartsReport starts;         // the decimation and the fits from both starts (with a tolerance: the
+  LoopStartsReport starts;            // the decimation and the fits from the three starts (with a tolerance: the
                                       // last round's decimation and fit, one start only)
   LoopFitReport fit;                  // the fit kept last (its iterations: all fits')
   ConnectivityReport connectivity;    // the moves tried and kept (none tried: not run)

@@ -2,6 +2,7 @@
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModHausdorffT.hh>
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 
@@ -60,7 +61,7 @@ class ModCreaseTagsT : public OpenMesh::Decimater::ModBaseT<MeshT> {
 }  // namespace
 
 LoopControlMesh decimate_control_mesh(const TriangleMesh& welded, int target_vertices, double sharp_angle,
-                                      DecimationReport* report, const std::vector<int>& keep) {
+                                      DecimationReport* report, const std::vector<int>& keep, double distance_guard) {
   if (target_vertices < 4) throw std::invalid_argument("decimate_control_mesh: the target must be 4 vertices or more");
   if (welded.triangles.empty()) throw std::invalid_argument("decimate_control_mesh: the mesh has no triangles");
   DecimationReport r;
@@ -131,6 +132,11 @@ LoopControlMesh decimate_control_mesh(const TriangleMesh& welded, int target_ver
     decimater.add(crease_tags);
     decimater.add(flipping);
     decimater.module(flipping).set_max_normal_deviation(60.0);
+  }
+  OpenMesh::Decimater::ModHausdorffT<Mesh>::Handle hausdorff;
+  if (distance_guard > 0) {
+    decimater.add(hausdorff);
+    decimater.module(hausdorff).set_tolerance(distance_guard);
   }
   decimater.initialize();
   decimater.decimate_to(target_vertices);

@@ -26,7 +26,12 @@ struct DecimationReport {
 // - positions are a subset of the input's (half-edge collapses, no new points).
 // Refuses (std::invalid_argument) a target below 4, a mesh without triangles, a kept index out of range.
 // `keep` lists input vertices that must stay (locked: where an earlier fit stayed too far).
+// `distance_guard` > 0: no collapse may leave a removed input vertex farther than it from the mesh
+// (OpenMesh's ModHausdorffT), which stops the decimation early when the target needs more; quadrics
+// alone let a cup's rim close over it, as all of the lid's corners lie in the rim's plane
+// (decimate_within_distance searches for the guard that reaches the target).
 LoopControlMesh decimate_control_mesh(const TriangleMesh& welded, int target_vertices, double sharp_angle_radians,
-                                      DecimationReport* report = nullptr, const std::vector<int>& keep = {});
+                                      DecimationReport* report = nullptr, const std::vector<int>& keep = {},
+                                      double distance_guard = 0);
 
 }  // namespace cadnurbs

@@ -123,6 +123,7 @@ Sparse spring_matrix(const LoopControlMesh& control) {
 struct Correspondence {
   std::vector<std::pair<int, double>> stencil;
   Eigen::Vector3d target, normal;
+  double weight = 1;
 };
 
 std::vector<std::pair<int, double>> merged(std::vector<std::pair<int, double>> entries) {
@@ -148,13 +149,14 @@ bool solve_control_points(const std::vector<Correspondence>& pairs, const Sparse
   const double root = std::sqrt(tangent_weight);
   for (const Correspondence& c : pairs) {
     const long plane_row = static_cast<long>(b.size());
+    const double s = std::sqrt(c.weight);
     for (const auto& [col, w] : c.stencil)
       for (int k = 0; k < 3; ++k) {
-        if (c.normal[k] != 0) j.emplace_back(plane_row, 3L * col + k, w * c.normal[k]);
-        j.emplace_back(plane_row + 1 + k, 3L * col + k, root * w);
+        if (c.normal[k] != 0) j.emplace_back(plane_row, 3L * col + k, s * w * c.normal[k]);
+        j.emplace_back(plane_row + 1 + k, 3L * col + k, s * root * w);
       }
-    b.push_back(c.normal.dot(c.target));
-    for (int k = 0; k < 3; ++k) b.push_back(root * c.target[k]);
+    b.push_back(s * c.normal.dot(c.target));
+    for (int k = 0; k < 3; ++k) b.push_back(s * root * c.target[k]);
   }
   Sparse jm(static_cast<long>(b.size()), 3 * nc);
   jm.setFromTriplets(j.begin(), j.end());
@@ -178,6 +180,10 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
   auto stencil_of = [&](int vertex, double weight, std::vector<std::pair<int, double>>& out) {
     for (LoopStencils::InnerIterator it(rows, vertex); it; ++it) out.emplace_back(static_cast<int>(it.col()), weight * it.value());
   };
+
+  // The data points start with the input's vertices (data_samples), so the input's triangles index them.
+  const double input_area = mesh_area({data.points, input_mesh_triangles, {}});
+  const double data_area_each = input_area / static_cast<double>(data.points.size());  // balance_sides' unit
 
   Residuals best;
   best.rms = INFINITY;
@@ -214,6 +220,9 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       r.max = std::max(r.max, d);
     }
     const std::vector<Eigen::Vector3d> surface_normals = vertex_normals(surface);
+    const double surface_weight =
+        options.balance_sides ? (mesh_area(surface) / limit.coarser_vertex_count) / data_area_each : 1.0;
+    const double data_sum = sum;
     // The surface's side: the limit points of level k-1's vertices (a quarter of level k's: enough
     // to watch the surface between data points, and the solve's cost grows with the samples).
     const size_t surface_samples = static_cast<size_t>(limit.coarser_vertex_count);
@@ -229,6 +238,7 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       stencil_of(static_cast<int>(v), 1.0, c.stencil);
       c.target = eig(point);
       c.normal = unit_normal(eig(face[0]), eig(face[1]), eig(face[2]));
+      c.weight = surface_weight;
       if (!facing_away(c.normal, surface_normals[v])) pairs.push_back(std::move(c));
       const double d = (eig(point) - surface.positions[v]).norm();
       r.surface_to_data[v] = d;
@@ -236,6 +246,9 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       r.max = std::max(r.max, d);
     }
     r.rms = std::sqrt(sum / static_cast<double>(data.points.size() + surface_samples));
+    if (options.balance_sides)
+      r.rms = std::sqrt((data_sum + surface_weight * (sum - data_sum)) /
+                        (static_cast<double>(data.points.size()) + surface_weight * static_cast<double>(surface_samples)));
     // Stop after three rounds without a gain of 0.1 %; keep the best state seen.
     if (r.rms < (1 - 1e-3) * best.rms) stale = 0;
     else if (++stale >= 3) break;

@@ -1,6 +1,7 @@
 // Loop fitting: a box keeps its sharp edges, a saved control mesh gives the same limit surface, and on
 // real parts the fitted limit surface is closer to the input than a quadric decimation with as many
 // vertices.
+#include <CGAL/Simple_cartesian.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,11 +9,13 @@
 #include <map>
 
 #include "analysis/loop_fit/decimate_control_mesh.hpp"
+#include "analysis/loop_fit/decimate_within_distance.hpp"
 #include "analysis/loop_fit/fit_loop_surface.hpp"
-#include "analysis/loop_fit/fit_loop_two_starts.hpp"
+#include "analysis/loop_fit/fit_loop_best_start.hpp"
 #include "analysis/loop_fit/improve_control_connectivity.hpp"
 #include "analysis/loop_fit/loop_limit_patches.hpp"
 #include "analysis/loop_fit/tag_sharp_edges.hpp"
+#include "analysis/mesh_distance.hpp"
 #include "analysis/subdivision/loop_limit_surface.hpp"
 #include "analysis/weld_vertices.hpp"
 #include "converters/loop_fit_measurement.hpp"
@@ -83,6 +86,34 @@ TEST(DecimateControlMesh, BoxKeepsItsCornersAndTaggedEdges) {
     length += (control.positions[a] - control.positions[b]).norm();
   }
   EXPECT_NEAR(length, 280.0, 1e-9);
+}
+
+// Largest distance from an input vertex to a mesh's triangles (CGAL's exact point-triangle distance).
+double farthest_vertex(const TriangleMesh& input, const TriangleMesh& mesh) {
+  using K = CGAL::Simple_cartesian<double>;
+  double farthest = 0;
+  for (const auto& p : input.positions) {
+    double nearest = INFINITY;
+    for (const auto& t : mesh.triangles) {
+      auto cg = [&](int v) { return K::Point_3(mesh.positions[v].x(), mesh.positions[v].y(), mesh.positions[v].z()); };
+      nearest = std::min(nearest, CGAL::squared_distance(K::Point_3(p.x(), p.y(), p.z()), K::Triangle_3(cg(t[0]), cg(t[1]), cg(t[2]))));
+    }
+    farthest = std::max(farthest, std::sqrt(nearest));
+  }
+  return farthest;
+}
+
+// The smallest distance guard that reaches the count keeps every input vertex within it; on the
+// corpus's fan at 50 vertices the plain quadric decimation leaves one more than twice as far.
+TEST(DecimateWithinDistance, KeepsEveryInputVertexWithinTheGuardAtTheCount) {
+  const TriangleMesh raw = read_stl(CADNURBS_SHARED_DIR "/corpus/stl/fan.stl");
+  const TriangleMesh fan = weld_vertices(raw, 100 * default_weld_tolerance(raw));
+  const GuardedDecimation guarded = decimate_within_distance(fan, 50);
+  EXPECT_EQ(guarded.mesh.positions.size(), 50u);
+  EXPECT_GT(guarded.decimations, 1);  // the first guard, 1e-3 of the diagonal, does not reach 50
+  EXPECT_LE(farthest_vertex(fan, guarded.mesh), guarded.guard * (1 + 1e-9));
+  const LoopControlMesh plain = decimate_control_mesh(fan, 50, -1);
+  EXPECT_GT(farthest_vertex(fan, {plain.positions, plain.triangles, {}}), 2 * guarded.guard);
 }
 
 // A box of 2 x 2 quads a face: its 12 edges, split in two, are the creases; the face diagonals and the
@@ -319,26 +350,29 @@ INSTANTIATE_TEST_SUITE_P(Parts, LoopFitAgainstQuadric,
                                            CADNURBS_SHARED_DIR "/corpus/stl/featuretype.STL",
                                            CADNURBS_SHARED_DIR "/corpus/stl/plate_holes.STL"));
 
-// Both starts are fitted at the same vertex count; the plain one is kept only when it has the lower RMS
-// at the fit's samples and no higher max; the returned control mesh is the kept fit's.
-TEST(FitLoopTwoStarts, KeepsTheFitWithTheLowerRms) {
+// All three starts are fitted at the same vertex count and measured; a later one is kept only when its
+// limit surface has the lower RMS and no higher max than the one kept before it; the returned control
+// mesh is the kept fit's, and its limit surface measures what the report says.
+TEST(FitLoopBestStart, KeepsTheFitWhoseLimitSurfaceIsClosest) {
   const TriangleMesh part = weld_vertices(read_stl(CADNURBS_SHARED_DIR "/corpus/stl/plate_holes.STL"), 0.01);
-  LoopTwoStartsReport report;
-  const LoopControlMesh fitted = fit_loop_two_starts(part, 120, 30 * M_PI / 180, {}, &report);
+  LoopStartsReport report;
+  const LoopControlMesh fitted = fit_loop_best_start(part, 120, 30 * M_PI / 180, {}, &report);
   EXPECT_EQ(fitted.positions.size(), 120u);
-  EXPECT_GT(report.feature_start.iterations, 0);
-  EXPECT_GT(report.plain_start.iterations, 0);
-  EXPECT_NE(report.feature_start.rms, report.plain_start.rms);
-  EXPECT_EQ(report.plain_start_kept,
-            report.plain_start.rms < report.feature_start.rms && report.plain_start.max <= report.feature_start.max);
-  EXPECT_EQ(kept_fit(report).rms, report.plain_start_kept ? report.plain_start.rms : report.feature_start.rms);
-  // Refitting the returned mesh starts where the kept fit ended: its first round measures that RMS.
-  LoopFitOptions once;
-  once.max_iterations = 1;
-  LoopFitReport again;
-  fit_loop_surface(part, fitted, once, &again);
-  EXPECT_NEAR(again.rms, kept_fit(report).rms, 1e-9 * kept_fit(report).rms);
-  EXPECT_THROW(fit_loop_two_starts(part, 120, -1, {}, nullptr), std::invalid_argument);
+  for (const LoopStartFit* f : {&report.features, &report.plain, &report.guarded}) {
+    EXPECT_GT(f->fit.iterations, 0);
+    EXPECT_GT(f->distance.samples, 0);
+  }
+  EXPECT_GT(report.guard, 0);
+  EXPECT_NE(report.features.distance.rms, report.plain.distance.rms);
+  auto beats = [](const LoopStartFit& a, const LoopStartFit& b) {
+    return a.distance.rms < b.distance.rms && a.distance.max <= b.distance.max;
+  };
+  const LoopStartFit& second = beats(report.plain, report.features) ? report.plain : report.features;
+  const LoopStartFit& expected = beats(report.guarded, second) ? report.guarded : second;
+  EXPECT_EQ(&kept_start(report), &expected);
+  const TriangleMesh limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(fitted), 3), fitted.positions);
+  EXPECT_NEAR(mesh_distance(limit, part).overall.rms, kept_start(report).distance.rms, 1e-12);
+  EXPECT_THROW(fit_loop_best_start(part, 120, -1, {}, nullptr), std::invalid_argument);
 }
 
 TEST(FitLoopToTolerance, KeepsVerticesUntilWithin) {

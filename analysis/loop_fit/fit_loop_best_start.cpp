@@ -1,0 +1,60 @@
+#include "analysis/loop_fit/fit_loop_best_start.hpp"
+
+#include <stdexcept>
+
+#include "analysis/loop_fit/decimate_within_distance.hpp"
+#include "analysis/loop_fit/tag_sharp_edges.hpp"
+#include "analysis/mesh_distance.hpp"
+#include "analysis/subdivision/loop_limit_surface.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+LoopControlMesh fit_and_measure(const TriangleMesh& welded, const LoopControlMesh& start, const LoopFitOptions& options,
+                                LoopStartFit& out) {
+  LoopControlMesh fitted = fit_loop_surface(welded, start, options, &out.fit);
+  const TriangleMesh limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(fitted), options.levels), fitted.positions);
+  out.distance = mesh_distance(limit, welded).overall;
+  return fitted;
+}
+
+bool beats(const DeviationStats& a, const DeviationStats& b) { return a.rms < b.rms && a.max <= b.max; }
+
+}  // namespace
+
+LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_vertices, double sharp_angle,
+                                    const LoopFitOptions& options, LoopStartsReport* report,
+                                    const std::vector<int>& keep) {
+  if (!(sharp_angle >= 0)) throw std::invalid_argument("fit_loop_best_start: the sharp angle must be 0 or more");
+  LoopStartsReport r;
+  LoopFitOptions plain_options = options;
+  plain_options.balance_sides = false;
+  const LoopControlMesh feature_start = decimate_control_mesh(welded, target_vertices, sharp_angle, &r.decimation, keep);
+  LoopControlMesh best = fit_and_measure(welded, feature_start, plain_options, r.features);
+  const LoopStartFit* best_fit = &r.features;
+
+  const int reached = static_cast<int>(feature_start.positions.size());
+  const LoopControlMesh plain = decimate_control_mesh(welded, reached, -1, nullptr, keep);
+  r.plain_decimation = {plain.positions, plain.triangles, {}};
+  LoopControlMesh fitted = fit_and_measure(welded, tag_sharp_edges(r.plain_decimation, sharp_angle), plain_options, r.plain);
+  if (beats(r.plain.distance, best_fit->distance)) {
+    best = std::move(fitted);
+    best_fit = &r.plain;
+    r.kept = LoopStart::plain;
+  }
+
+  const GuardedDecimation guarded = decimate_within_distance(welded, static_cast<int>(plain.positions.size()), keep);
+  r.guard = guarded.guard;
+  LoopFitOptions balanced = options;
+  balanced.balance_sides = true;
+  fitted = fit_and_measure(welded, tag_sharp_edges(guarded.mesh, sharp_angle), balanced, r.guarded);
+  if (beats(r.guarded.distance, best_fit->distance)) {
+    best = std::move(fitted);
+    r.kept = LoopStart::guarded;
+  }
+  if (report) *report = std::move(r);
+  return best;
+}
+
+}  // namespace cadnurbs
