@@ -9,18 +9,13 @@
 #include <tuple>
 #include <utility>
 
+#include "core/bounding_box.hpp"
 #include "core/equal_points.hpp"
 #include "core/union_find.hpp"
 
 namespace cadnurbs {
 
 namespace {
-
-Eigen::AlignedBox3d positions_box(const TriangleMesh& mesh) {
-  Eigen::AlignedBox3d box;
-  for (const auto& p : mesh.positions) box.extend(p);
-  return box;
-}
 
 // A point and the cube it lies in (cube coordinates counted from the box's low corner, so never negative).
 struct Entry {
@@ -77,7 +72,7 @@ void weld_into(const TriangleMesh& mesh, double tolerance, WeldReport* report, T
   const std::size_t m = points.size();
   auto point_of = [&](int v) { return soup ? point_of_vertex[v] : v; };
 
-  const Eigen::AlignedBox3d box = positions_box(mesh);
+  const Eigen::AlignedBox3d box = mesh_bounding_box(mesh);
   const Eigen::Vector3d origin = n ? box.min() : Eigen::Vector3d::Zero();
   // The cell must be at least the tolerance in the rounded arithmetic too: a pair within the tolerance
   // may not end up two cells apart because (p - origin) / cell rounded. The slack covers the rounding
@@ -203,7 +198,7 @@ void weld_into(const TriangleMesh& mesh, double tolerance, WeldReport* report, T
 
 double default_weld_tolerance(const TriangleMesh& mesh) {
   if (mesh.positions.empty()) return 0;
-  return 1e-6 * positions_box(mesh).diagonal().norm();
+  return 1e-6 * mesh_bounding_box(mesh).diagonal().norm();
 }
 
 TriangleMesh weld_vertices(const TriangleMesh& mesh, double tolerance, WeldReport* report) {

@@ -17,4 +17,10 @@ Eigen::AlignedBox3d scene_bounding_box(const Scene& scene) {
   return box;
 }
 
+Eigen::AlignedBox3d mesh_bounding_box(const TriangleMesh& mesh) {
+  Eigen::AlignedBox3d box;
+  for (const auto& p : mesh.positions) box.extend(p);
+  return box;
+}
+
 }  // namespace cadnurbs

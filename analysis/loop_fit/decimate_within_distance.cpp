@@ -2,16 +2,12 @@
 
 #include <cmath>
 
+#include "core/bounding_box.hpp"
+
 namespace cadnurbs {
 
 GuardedDecimation decimate_within_distance(const TriangleMesh& welded, int target_vertices, const std::vector<int>& keep) {
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
-  for (const auto& t : welded.triangles)
-    for (const int v : t) {
-      low = low.cwiseMin(welded.positions[v]);
-      high = high.cwiseMax(welded.positions[v]);
-    }
-  const double diagonal = welded.triangles.empty() ? 0.0 : (high - low).norm();
+  const double diagonal = welded.positions.empty() ? 0.0 : mesh_bounding_box(welded).diagonal().norm();
 
   GuardedDecimation out;
   auto run = [&](double guard) {

@@ -181,9 +181,10 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
     for (LoopStencils::InnerIterator it(rows, vertex); it; ++it) out.emplace_back(static_cast<int>(it.col()), weight * it.value());
   };
 
-  // The data points start with the input's vertices (data_samples), so the input's triangles index them.
-  const double input_area = mesh_area({data.points, input_mesh_triangles, {}});
-  const double data_area_each = input_area / static_cast<double>(data.points.size());  // balance_sides' unit
+  // balance_sides' unit: the input area a data point stands for. The data points start with the
+  // input's vertices (data_samples), so the input's triangles index them.
+  const double data_area_each =
+      options.balance_sides ? mesh_area({data.points, input_mesh_triangles, {}}) / static_cast<double>(data.points.size()) : 0.0;
 
   Residuals best;
   best.rms = INFINITY;
