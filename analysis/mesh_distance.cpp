@@ -31,20 +31,25 @@ std::vector<K::Triangle_3> cgal_triangles(const TriangleMesh& mesh, const char* 
   return out;
 }
 
-// Distances from the samples of `from` to the triangles of `to`, summed into `stats`; returns the
-// sum of squares.
-double one_side(const TriangleMesh& from, const std::vector<K::Triangle_3>& to, double spacing, DeviationStats& stats) {
+// Distances from the samples of `from` to the triangles of `to`, into `stats`; returns the integral
+// of the squared distance over `from` (area-weighted sum) and adds its area to `area`.
+double one_side(const TriangleMesh& from, const std::vector<K::Triangle_3>& to, double spacing, DeviationStats& stats,
+                double& area) {
   TriangleTree tree(to.begin(), to.end());
   tree.accelerate_distance_queries();
-  double sum = 0;
-  for (const Eigen::Vector3d& p : sample_triangles(from, spacing)) {
-    const double d = std::sqrt(tree.squared_distance(cg(p)));
-    stats.max = std::max(stats.max, d);
-    sum += d * d;
-    ++stats.samples;
+  std::vector<double> weights;
+  const std::vector<Eigen::Vector3d> points = sample_triangles(from, spacing, &weights);
+  double integral = 0, side_area = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double d2 = tree.squared_distance(cg(points[i]));
+    stats.max = std::max(stats.max, std::sqrt(d2));
+    integral += weights[i] * d2;
+    side_area += weights[i];
   }
-  stats.rms = stats.samples ? std::sqrt(sum / stats.samples) : 0.0;
-  return sum;
+  stats.samples = static_cast<long>(points.size());
+  stats.rms = side_area > 0 ? std::sqrt(integral / side_area) : 0.0;
+  area += side_area;
+  return integral;
 }
 
 }  // namespace
@@ -53,10 +58,11 @@ MeshDistance mesh_distance(const TriangleMesh& a, const TriangleMesh& b, double 
   const auto ta = cgal_triangles(a, "mesh a"), tb = cgal_triangles(b, "mesh b");
   if (!(spacing > 0)) spacing = std::min(default_sample_spacing(a), default_sample_spacing(b));
   MeshDistance out;
-  const double sum = one_side(a, tb, spacing, out.a_to_b) + one_side(b, ta, spacing, out.b_to_a);
+  double area = 0;
+  const double integral = one_side(a, tb, spacing, out.a_to_b, area) + one_side(b, ta, spacing, out.b_to_a, area);
   out.overall.samples = out.a_to_b.samples + out.b_to_a.samples;
   out.overall.max = std::max(out.a_to_b.max, out.b_to_a.max);
-  out.overall.rms = out.overall.samples ? std::sqrt(sum / out.overall.samples) : 0.0;
+  out.overall.rms = area > 0 ? std::sqrt(integral / area) : 0.0;
   return out;
 }
 
