@@ -10,7 +10,12 @@ namespace cadnurbs {
 struct LoopFitOptions {
   int levels = 3;            // refinements of the limit mesh that stands for the limit surface
   double fairness = 1e-5;    // spring term weight, relative to the data terms (Hoppe's E_spring)
-  double tangent_weight = 0.05;  // point-to-point share next to the point-to-tangent-plane distance
+  // Point-to-point share next to the point-to-tangent-plane distance: small, so points slide along
+  // the surface (the squared distance minimisation of Ma et al. 2004), yet above 0, so the solve
+  // stays definite. 0.05 (until stop 31) took 2 to 4 times the rounds and fitted no closer: at 200 control
+  // vertices capping-90 60 rounds -> 14, RMS 0.257 -> 0.227 of the quadric decimation's; only
+  // plate_holes got worse (0.239 -> 0.293).
+  double tangent_weight = 0.001;
   int max_iterations = 60;   // project-and-solve rounds
   // Weight each side by the area its samples stand for: a limit point by (the limit surface's area /
   // its samples) against a data point's (the input's area / the data points). Unweighted, the some 15

@@ -14,7 +14,7 @@ struct ConnectivityOptions {
   int local_rounds = 2;         // project-and-solve rounds of each local re-fit
   int free_rings = 0;           // control points re-fitted: the changed vertices and this many rings around
   double fairness = 1e-5;       // spring weight relative to the data (as LoopFitOptions)
-  double tangent_weight = 0.05; // point-to-point share next to the tangent-plane distance (as LoopFitOptions)
+  double tangent_weight = 0.001; // point-to-point share next to the tangent-plane distance (as LoopFitOptions)
   bool swaps = true, corner_toggles = true, crease_toggles = true;
 };
 
