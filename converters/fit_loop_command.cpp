@@ -23,9 +23,9 @@ const char* kHelp =
     "Fits a Loop subdivision surface to the triangles of IN: a control mesh by quadric decimation to N\n"
     "vertices (default 200) with the edges sharper than the crease angle (default 30 degrees) kept and\n"
     "tagged as creases, then control points solved by least squares so that the limit surface fits\n"
-    "IN both ways. Two more starts are fitted at as many vertices: a plain quadric decimation tagged\n"
-    "where it is sharp itself, and one under the smallest guard on the removed vertices' distance that\n"
-    "reaches the count, fitted with both sides weighted by area; a later start is kept when its limit\n"
+    "IN both ways. Two more starts are fitted at as many vertices, with both sides weighted by area: a\n"
+    "plain quadric decimation tagged where it is sharp itself, and one under the smallest guard on the\n"
+    "removed vertices' distance that reaches the count; a later start is kept when its limit\n"
     "surface is closer to IN both in RMS and max. --connectivity then tries edge\n"
     "swaps and crease and corner tag toggles, keeps those after which a local re-fit gets closer, and\n"
     "fits again (much slower; not with a tolerance).\n"
@@ -125,11 +125,11 @@ int run_fit_loop(const std::vector<std::string>& args) {
       };
       const char* kept = st.kept == LoopStart::guarded ? "guarded" : st.kept == LoopStart::plain ? "plain" : "features";
       std::cout << "start kept: " << kept << " (limit surface to input, two-sided RMS / max, from the start that keeps the "
-                << "input's sharp edges " << figures(st.features) << "; from the plain quadric decimation "
-                << figures(st.plain) << "; from the quadric decimation "
+                << "input's sharp edges " << figures(st.features) << "; fitted with both sides weighted by area, "
+                << "from the plain quadric decimation " << figures(st.plain) << "; from the quadric decimation "
                 << (st.guard > 0 ? "that leaves no input vertex farther than " + message_number(st.guard) + " " + unit
                                  : std::string("(no distance guard reached the count)"))
-                << ", fitted with both sides weighted by area, " << figures(st.guarded) << ")\n";
+                << ", " << figures(st.guarded) << ")\n";
     }
   }
   if (m.connectivity.candidates > 0)

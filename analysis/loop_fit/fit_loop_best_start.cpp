@@ -37,7 +37,9 @@ LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_verti
   const int reached = static_cast<int>(feature_start.positions.size());
   const LoopControlMesh plain = decimate_control_mesh(welded, reached, -1, nullptr, keep);
   r.plain_decimation = {plain.positions, plain.triangles, {}};
-  LoopControlMesh fitted = fit_and_measure(welded, tag_sharp_edges(r.plain_decimation, sharp_angle), plain_options, r.plain);
+  LoopFitOptions balanced = options;
+  balanced.balance_sides = true;
+  LoopControlMesh fitted = fit_and_measure(welded, tag_sharp_edges(r.plain_decimation, sharp_angle), balanced, r.plain);
   if (beats(r.plain.distance, best_fit->distance)) {
     best = std::move(fitted);
     best_fit = &r.plain;
@@ -46,8 +48,6 @@ LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_verti
 
   const GuardedDecimation guarded = decimate_within_distance(welded, static_cast<int>(plain.positions.size()), keep);
   r.guard = guarded.guard;
-  LoopFitOptions balanced = options;
-  balanced.balance_sides = true;
   fitted = fit_and_measure(welded, tag_sharp_edges(guarded.mesh, sharp_angle), balanced, r.guarded);
   if (beats(r.guarded.distance, best_fit->distance)) {
     best = std::move(fitted);

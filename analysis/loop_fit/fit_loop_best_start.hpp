@@ -5,13 +5,15 @@
 //   CAD tessellation) it spends nearly all of its vertices on them and leaves the body a few large
 //   triangles (TR12J_OCC: 596 crease edges among 531 vertices).
 // - plain: a plain quadric decimation to as many vertices, tagged where it is sharp itself
-//   (tag_sharp_edges); it spends the vertices where the error is.
+//   (tag_sharp_edges); it spends the vertices where the error is. Fitted with the two sides weighted
+//   by area (LoopFitOptions::balance_sides), as the guarded start is: on motor 0.65 of the
+//   decimation's RMS and 0.96 of its max, against 0.80 and 1.00 unweighted (stop 31).
 // - guarded: the same under the smallest distance guard that reaches the count
-//   (decimate_within_distance), which keeps it from closing cavities with lids, fitted with the two
-//   sides weighted by area (LoopFitOptions::balance_sides), which keeps it from folding to pass
-//   through noise.
-// None wins everywhere (corpus, RMS ratio to the plain quadric decimation: TR12J_OCC features 1.38,
-// guarded 0.51; motor plain 0.70, guarded 0.84; the tray features 0.88, guarded 1.11).
+//   (decimate_within_distance), which keeps it from closing cavities with lids, fitted weighted too,
+//   which keeps it from folding to pass through noise.
+// None wins everywhere (corpus, RMS ratio to the plain quadric decimation, pooled by count in stop 30:
+// TR12J_OCC features 1.38, guarded 0.51; motor plain 0.70, guarded 0.84; the tray features 0.88,
+// guarded 1.11).
 #include "analysis/loop_fit/decimate_control_mesh.hpp"
 #include "analysis/loop_fit/fit_loop_surface.hpp"
 #include "analysis/measure_deviation.hpp"
@@ -34,7 +36,7 @@ struct LoopStartsReport {
 };
 
 // Takes a welded mesh, the vertex target, the sharp angle (radians, >= 0), fit options (their
-// balance_sides is set for the guarded start only), and input vertices every decimation must keep.
+// balance_sides is set for the plain and guarded starts), and input vertices every decimation must keep.
 // Decimates with features kept, then plainly and guarded to the vertex count that reached (so all
 // have as many, unless kept vertices stop the plain ones earlier), fits all three, measures each
 // limit surface (options.levels refinements) against the input, and returns the fit of the first
