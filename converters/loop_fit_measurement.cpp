@@ -47,7 +47,7 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
         const LoopControlMesh improved = improve_control_connectivity(input, m.control, moves, &m.connectivity);
         LoopFitReport refit;
         LoopFitOptions refit_options = options;  // the kept start's weighting, so the RMS compare alike
-        refit_options.balance_sides = m.starts.kept != LoopStart::features;
+        refit_options.balance_sides = start_balances_sides(m.starts.kept);
         const LoopControlMesh refitted = fit_loop_surface(input, improved, refit_options, &refit);
         refit.iterations += m.fit.iterations;
         // The moves were judged locally; the global fit has the last word.

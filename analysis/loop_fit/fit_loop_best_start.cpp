@@ -28,18 +28,20 @@ LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_verti
                                     const std::vector<int>& keep) {
   if (!(sharp_angle >= 0)) throw std::invalid_argument("fit_loop_best_start: the sharp angle must be 0 or more");
   LoopStartsReport r;
-  LoopFitOptions plain_options = options;
-  plain_options.balance_sides = false;
+  auto options_for = [&](LoopStart start) {
+    LoopFitOptions o = options;
+    o.balance_sides = start_balances_sides(start);
+    return o;
+  };
   const LoopControlMesh feature_start = decimate_control_mesh(welded, target_vertices, sharp_angle, &r.decimation, keep);
-  LoopControlMesh best = fit_and_measure(welded, feature_start, plain_options, r.features);
+  LoopControlMesh best = fit_and_measure(welded, feature_start, options_for(LoopStart::features), r.features);
   const LoopStartFit* best_fit = &r.features;
 
   const int reached = static_cast<int>(feature_start.positions.size());
   const LoopControlMesh plain = decimate_control_mesh(welded, reached, -1, nullptr, keep);
   r.plain_decimation = {plain.positions, plain.triangles, {}};
-  LoopFitOptions balanced = options;
-  balanced.balance_sides = true;
-  LoopControlMesh fitted = fit_and_measure(welded, tag_sharp_edges(r.plain_decimation, sharp_angle), balanced, r.plain);
+  LoopControlMesh fitted = fit_and_measure(welded, tag_sharp_edges(r.plain_decimation, sharp_angle), options_for(LoopStart::plain),
+                                          r.plain);
   if (beats(r.plain.distance, best_fit->distance)) {
     best = std::move(fitted);
     best_fit = &r.plain;
@@ -48,7 +50,7 @@ LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_verti
 
   const GuardedDecimation guarded = decimate_within_distance(welded, static_cast<int>(plain.positions.size()), keep);
   r.guard = guarded.guard;
-  fitted = fit_and_measure(welded, tag_sharp_edges(guarded.mesh, sharp_angle), balanced, r.guarded);
+  fitted = fit_and_measure(welded, tag_sharp_edges(guarded.mesh, sharp_angle), options_for(LoopStart::guarded), r.guarded);
   if (beats(r.guarded.distance, best_fit->distance)) {
     best = std::move(fitted);
     r.kept = LoopStart::guarded;

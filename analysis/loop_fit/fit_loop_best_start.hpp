@@ -49,6 +49,10 @@ LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_verti
                                     const LoopFitOptions& options, LoopStartsReport* report,
                                     const std::vector<int>& keep = {});
 
+// Whether a start is fitted with LoopFitOptions::balance_sides: the plain and guarded ones are, the
+// feature-keeping one is not (a refit of the kept start weights alike, so the RMS compare).
+inline bool start_balances_sides(LoopStart start) { return start != LoopStart::features; }
+
 // The kept start's fit and measure.
 inline const LoopStartFit& kept_start(const LoopStartsReport& r) {
   return r.kept == LoopStart::plain ? r.plain : r.kept == LoopStart::guarded ? r.guarded : r.features;

@@ -12,9 +12,9 @@ struct LoopFitOptions {
   double fairness = 1e-5;    // spring term weight, relative to the data terms (Hoppe's E_spring)
   // Point-to-point share next to the point-to-tangent-plane distance: small, so points slide along
   // the surface (the squared distance minimisation of Ma et al. 2004), yet above 0, so the solve
-  // stays definite. 0.05 (until stop 31) took 2 to 4 times the rounds and fitted no closer: at 200 control
-  // vertices capping-90 60 rounds -> 14, RMS 0.257 -> 0.227 of the quadric decimation's; only
-  // plate_holes got worse (0.239 -> 0.293).
+  // stays definite. 0.05 (until stop 31) took 2 to 4 times the rounds and fitted no closer: at 200
+  // control vertices capping-90 60 rounds -> 14, RMS 0.257 -> 0.227 of the quadric decimation's;
+  // only plate_holes got worse (0.239 -> 0.293).
   double tangent_weight = 0.001;
   int max_iterations = 60;   // project-and-solve rounds
   // Weight each side by the area its samples stand for: a limit point by (the limit surface's area /
