@@ -53,6 +53,9 @@ host=$(hostname -s)
 node_line=$(slurmd -C | head -1)  # "NodeName=<host> CPUs=.. Boards=.. ... RealMemory=.."
 [[ "$node_line" == NodeName=* ]] || die "slurmd -C said: $node_line"
 mkdir -p "$work/state" "$work/spool"
+# MinJobAge=0: slurmctld keeps every completed job's record (by default it drops them after 300 s),
+# as the states are read once the merge has ended; a loaded machine once ended the first array task
+# 357 s before the merge, and its record was gone ("array task 0: ").
 cat > "$work/slurm.conf" <<CONF
 ClusterName=cadnurbs-test
 SlurmctldHost=$host
@@ -77,6 +80,7 @@ ReturnToService=2
 MpiDefault=none
 JobAcctGatherType=jobacct_gather/none
 AccountingStorageType=accounting_storage/none
+MinJobAge=0
 $node_line State=UNKNOWN
 PartitionName=test Nodes=ALL Default=YES MaxTime=INFINITE State=UP
 CONF
