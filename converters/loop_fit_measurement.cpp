@@ -70,10 +70,13 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
   // The starts made this decimation already (same count, nothing kept) unless a tolerance or a
   // saved control mesh took their place.
   const int count = static_cast<int>(m.control.positions.size());
-  m.qem = static_cast<int>(m.starts.plain_decimation.positions.size()) == count
-              ? m.starts.plain_decimation
-              : as_triangle_mesh(decimate_control_mesh(input, count, -1));
-  m.qem_distance = mesh_distance(m.qem, input).overall;
+  if (static_cast<int>(m.starts.plain_decimation.positions.size()) == count) {
+    m.qem = m.starts.plain_decimation;
+    m.qem_distance = m.starts.plain_decimation_distance;
+  } else {
+    m.qem = as_triangle_mesh(decimate_control_mesh(input, count, -1));
+    m.qem_distance = mesh_distance(m.qem, input).overall;
+  }
 
   m.control_floats = 3L * static_cast<long>(m.control.positions.size());
   m.control_integers = 3L * static_cast<long>(m.control.triangles.size());

@@ -19,9 +19,13 @@ LoopControlMesh fit_and_measure(const TriangleMesh& welded, const LoopControlMes
   return fitted;
 }
 
-bool beats(const DeviationStats& a, const DeviationStats& b) { return a.rms < b.rms && a.max <= b.max; }
+double share(double figure, double decimations) { return decimations > 0 ? figure / decimations : figure; }
 
 }  // namespace
+
+double start_score(const DeviationStats& fit, const DeviationStats& decimation) {
+  return share(fit.rms, decimation.rms) + share(fit.max, decimation.max);
+}
 
 LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_vertices, double sharp_angle,
                                     const LoopFitOptions& options, LoopStartsReport* report,
@@ -40,9 +44,13 @@ LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_verti
   const int reached = static_cast<int>(feature_start.positions.size());
   const LoopControlMesh plain = decimate_control_mesh(welded, reached, -1, nullptr, keep);
   r.plain_decimation = {plain.positions, plain.triangles, {}};
+  r.plain_decimation_distance = mesh_distance(r.plain_decimation, welded).overall;
+  auto beats = [&](const LoopStartFit& a, const LoopStartFit& b) {
+    return start_score(a.distance, r.plain_decimation_distance) < start_score(b.distance, r.plain_decimation_distance);
+  };
   LoopControlMesh fitted = fit_and_measure(welded, tag_sharp_edges(r.plain_decimation, sharp_angle), options_for(LoopStart::plain),
                                           r.plain);
-  if (beats(r.plain.distance, best_fit->distance)) {
+  if (beats(r.plain, *best_fit)) {
     best = std::move(fitted);
     best_fit = &r.plain;
     r.kept = LoopStart::plain;
@@ -51,7 +59,7 @@ LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_verti
   const GuardedDecimation guarded = decimate_within_distance(welded, static_cast<int>(plain.positions.size()), keep);
   r.guard = guarded.guard;
   fitted = fit_and_measure(welded, tag_sharp_edges(guarded.mesh, sharp_angle), options_for(LoopStart::guarded), r.guarded);
-  if (beats(r.guarded.distance, best_fit->distance)) {
+  if (beats(r.guarded, *best_fit)) {
     best = std::move(fitted);
     r.kept = LoopStart::guarded;
   }
