@@ -53,9 +53,10 @@ host=$(hostname -s)
 node_line=$(slurmd -C | head -1)  # "NodeName=<host> CPUs=.. Boards=.. ... RealMemory=.."
 [[ "$node_line" == NodeName=* ]] || die "slurmd -C said: $node_line"
 mkdir -p "$work/state" "$work/spool"
-# MinJobAge=0: slurmctld keeps every completed job's record (by default it drops them after 300 s),
-# as the states are read once the merge has ended; a loaded machine once ended the first array task
-# 357 s before the merge, and its record was gone ("array task 0: ").
+# MinJobAge=3600: slurmctld keeps a completed job's record an hour (by default 300 s), as the states
+# are read once the merge has ended (within 10 minutes, or the test fails); on a loaded machine the
+# first array task once ended 357 s before the merge, and its record was gone ("array task 0: ").
+# (0, which the manual says keeps records for good, is taken as 2 s by Debian 12's Slurm 22.05.)
 cat > "$work/slurm.conf" <<CONF
 ClusterName=cadnurbs-test
 SlurmctldHost=$host
@@ -80,7 +81,7 @@ ReturnToService=2
 MpiDefault=none
 JobAcctGatherType=jobacct_gather/none
 AccountingStorageType=accounting_storage/none
-MinJobAge=0
+MinJobAge=3600
 $node_line State=UNKNOWN
 PartitionName=test Nodes=ALL Default=YES MaxTime=INFINITE State=UP
 CONF
