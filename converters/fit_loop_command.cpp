@@ -28,7 +28,8 @@ const char* kHelp =
     "removed vertices' distance that reaches the count; the fit kept is the one whose limit\n"
     "surface's RMS and max to IN, each as a share of the plain decimation's, sum lowest.\n"
     "--connectivity then tries edge swaps and crease and corner tag toggles, keeps those after which\n"
-    "a local re-fit gets closer, and fits again (much slower; not with a tolerance).\n"
+    "a local re-fit gets closer, and fits again; up to 4 such rounds, while each fit gains 1 % or more\n"
+    "(much slower; not with a tolerance).\n"
     "--tolerance D (first start only) keeps more of IN's vertices where the surface stays farther\n"
     "than D, decimates and fits again, until it is within D (N is the first round's count).\n"
     "IN's vertices closer than TOL are welded first (default 1e-4 of the bounding-box diagonal).\n"
@@ -132,10 +133,17 @@ int run_fit_loop(const std::vector<std::string>& args) {
                 << ", " << figures(st.guarded) << ")\n";
     }
   }
-  if (m.connectivity.candidates > 0)
-    std::cout << "connectivity: " << m.connectivity.candidates << " local re-fits, " << m.connectivity.swaps << " swaps, "
-              << m.connectivity.corner_toggles << " corner and " << m.connectivity.crease_toggles << " crease tag toggles kept; "
-              << (m.connectivity_kept ? "refitted" : "the refit was not better, the first fit kept") << "\n";
+  if (m.connectivity.moves.candidates > 0) {
+    const ConnectivityRoundsReport& c = m.connectivity;
+    std::cout << "connectivity: " << c.moves.candidates << " local re-fits, " << c.moves.swaps << " swaps, "
+              << c.moves.corner_toggles << " corner and " << c.moves.crease_toggles << " crease tag toggles kept; "
+              << c.rounds << " rounds fitted (RMS at the fit's samples:";
+    for (double rms : c.rms) std::cout << " " << rms;
+    std::cout << " " << unit << "); "
+              << (m.connectivity_kept ? "round " + std::to_string(c.rounds_kept) + "'s fit kept"
+                                      : std::string("no round's fit was closer, the first fit kept"))
+              << "\n";
+  }
   std::cout << "limit surface (" << request.levels << " levels, " << m.limit.triangles.size()
             << " triangles) to input, two-sided: RMS " << m.limit_distance.rms << " " << unit << ", max "
             << m.limit_distance.max << " " << unit << "\n"

@@ -42,22 +42,20 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
       m.fit = kept_start(m.starts).fit;
       m.fit.iterations = m.starts.features.fit.iterations + m.starts.plain.fit.iterations + m.starts.guarded.fit.iterations;
       if (request.improve_connectivity) {
-        ConnectivityOptions moves;
-        moves.levels = request.levels;
-        const LoopControlMesh improved = improve_control_connectivity(input, m.control, moves, &m.connectivity);
+        ConnectivityRoundsOptions rounds;
+        rounds.moves.levels = request.levels;
+        rounds.moves.sweeps = 1;
+        rounds.fit = options;  // the kept start's weighting, so the RMS compare alike
+        rounds.fit.balance_sides = start_balances_sides(m.starts.kept);
+        rounds.max_rounds = request.connectivity_rounds;
         LoopFitReport refit;
-        LoopFitOptions refit_options = options;  // the kept start's weighting, so the RMS compare alike
-        refit_options.balance_sides = start_balances_sides(m.starts.kept);
-        const LoopControlMesh refitted = fit_loop_surface(input, improved, refit_options, &refit);
+        m.control = fit_loop_connectivity_rounds(input, m.control, m.fit, rounds, &refit, &m.connectivity);
         refit.iterations += m.fit.iterations;
-        // The moves were judged locally; the global fit has the last word.
-        m.connectivity_kept = refit.rms < m.fit.rms;
-        if (m.connectivity_kept) {
-          m.control = refitted;
+        m.connectivity_kept = m.connectivity.rounds_kept > 0;
+        if (m.connectivity_kept)
           m.fit = refit;
-        } else {
+        else
           m.fit.iterations = refit.iterations;
-        }
       }
     }
   }

@@ -6,7 +6,7 @@
 
 #include "analysis/loop_fit/fit_loop_to_tolerance.hpp"
 #include "analysis/loop_fit/fit_loop_best_start.hpp"
-#include "analysis/loop_fit/improve_control_connectivity.hpp"
+#include "analysis/loop_fit/fit_loop_connectivity_rounds.hpp"
 #include "analysis/measure_deviation.hpp"
 
 namespace cadnurbs {
@@ -17,11 +17,12 @@ struct LoopFitRequest {
   double crease_angle_degrees = 30; // input edges at or above it are creases (normals' default too; 40 left the
                                     // OCC bottle's shoulder smooth: RMS 0.68 of QEM's against 0.47, pooled by count)
   int levels = 3;                   // refinements of the limit mesh
-  // Without a tolerance: after the fit, edge swaps and tag toggles where they lower the local error
-  // (improve_control_connectivity), then the fit again. Off by default: on the corpus's tray it
-  // takes the RMS from 0.77 to 0.26 of the quadric decimation's (bottle_ascii 0.52 to 0.35), but costs
-  // some 10 to 20 plain fits.
+  // Without a tolerance: after the fit, rounds of one sweep of edge swaps and tag toggles where they
+  // lower the local error, each followed by the fit again (fit_loop_connectivity_rounds). Off by
+  // default: with two sweeps then one fit (stop 31) it took the corpus's tray from 0.77 to 0.26 of the
+  // quadric decimation's RMS (bottle_ascii 0.52 to 0.35), but cost some 10 to 20 plain fits.
   bool improve_connectivity = false;
+  int connectivity_rounds = 4;      // at most; fewer once a round's fit gains under 1 %
   // Vertices closer than this are one (< 0: 1e-4 of the bounding-box diagonal, 100 times the normals'
   // default: a fit needs connectivity, and ASCII exporters round shared corners differently, by
   // up to 6e-5 of the diagonal in the corpus's OCC bottle).
@@ -37,8 +38,8 @@ struct LoopFitMeasure {
   LoopStartsReport starts;            // the decimation and the fits from the three starts (with a tolerance: the
                                       // last round's decimation and fit, one start only)
   LoopFitReport fit;                  // the fit kept last (its iterations: all fits')
-  ConnectivityReport connectivity;    // the moves tried and kept (none tried: not run)
-  bool connectivity_kept = false;     // the refit after the moves beat the fit before them, and is the result
+  ConnectivityRoundsReport connectivity;  // the moves tried and kept, the rounds' fits (no candidates: not run)
+  bool connectivity_kept = false;     // a round's fit beat the fit before the moves; the last such is the result
   int rounds = 1;                     // decimate-and-fit rounds (more with a tolerance)
   bool tolerance_met = false;         // with a tolerance: the fit is within it at its own samples
   DeviationStats limit_distance;      // two-sided, limit mesh to input (mesh_distance)

@@ -5,9 +5,10 @@
 //   CAD tessellation) it spends nearly all of its vertices on them and leaves the body a few large
 //   triangles (TR12J_OCC: 596 crease edges among 531 vertices).
 // - plain: a plain quadric decimation to as many vertices, tagged where it is sharp itself
-//   (tag_sharp_edges); it spends the vertices where the error is. Fitted with the two sides weighted
-//   by area (LoopFitOptions::balance_sides), as the guarded start is: on motor 0.65 of the
-//   decimation's RMS and 0.96 of its max, against 0.80 and 1.00 unweighted (stop 31).
+//   (tag_sharp_edges); it spends the vertices where the error is. Fitted with every sample weighted
+//   by its area (LoopFitOptions::balance_sides), as the guarded start is: on motor 0.61 of the
+//   decimation's RMS and 0.91 of its max (stop 33; 0.65 and 0.96 with each side weighted as a whole,
+//   0.80 and 1.00 unweighted).
 // - guarded: the same under the smallest distance guard that reaches the count
 //   (decimate_within_distance), which keeps it from closing cavities with lids, fitted weighted too,
 //   which keeps it from folding to pass through noise.

@@ -29,6 +29,7 @@ struct Samples {
   std::vector<Eigen::Vector3d> points;
   std::vector<Eigen::Vector3d> normals;  // unit, or zero where the input has no area
   std::vector<int> owner;                // the input vertex nearest the point (of its triangle's corners)
+  std::vector<double> area;              // the input area the point stands for (they sum to the input's)
 };
 
 // The data points: every input vertex (area-weighted normal), and on every triangle the points of a
@@ -38,6 +39,7 @@ Samples data_samples(const TriangleMesh& input) {
   Samples s;
   s.points = input.positions;
   s.normals.assign(input.positions.size(), Eigen::Vector3d::Zero());
+  s.area.assign(input.positions.size(), 0.0);
   for (size_t v = 0; v < input.positions.size(); ++v) s.owner.push_back(static_cast<int>(v));
   double edge_sum = 0;
   for (const auto& t : input.triangles)
@@ -52,6 +54,7 @@ Samples data_samples(const TriangleMesh& input) {
     const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
     const int n = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 16);
     const Eigen::Vector3d unit = area_normal.norm() > 0 ? Eigen::Vector3d(area_normal.normalized()) : Eigen::Vector3d::Zero();
+    const size_t first_own = s.points.size();
     auto add = [&](const Eigen::Vector3d& p) {
       s.points.push_back(p);
       s.normals.push_back(unit);
@@ -67,6 +70,9 @@ Samples data_samples(const TriangleMesh& input) {
         if (i == n || j == n || k == n || n < 3) continue;  // corners are the vertices
         add((i * a + j * b + k * c) / n);
       }
+    const double share = 0.5 * area_normal.norm() / static_cast<double>(s.points.size() - first_own + 3);
+    s.area.resize(s.points.size(), share);
+    for (const int v : t) s.area[v] += share;
   }
   for (size_t v = 0; v < input.positions.size(); ++v)
     if (s.normals[v].norm() > 0) s.normals[v].normalize();
@@ -83,6 +89,24 @@ std::vector<Eigen::Vector3d> vertex_normals(const TriangleMesh& mesh) {
   for (auto& n : normals)
     if (n.norm() > 0) n.normalize();
   return normals;
+}
+
+// The limit mesh's area each of its first `count` vertices (the coarser level's) stands for: a third of
+// its triangles' area, scaled so that they sum to the mesh's area (the finer vertices are not samples).
+std::vector<double> coarse_vertex_areas(const TriangleMesh& surface, int count) {
+  std::vector<double> area(surface.positions.size(), 0.0);
+  double total = 0;
+  for (const auto& t : surface.triangles) {
+    const double a = 0.5 * (surface.positions[t[1]] - surface.positions[t[0]]).cross(surface.positions[t[2]] - surface.positions[t[0]]).norm();
+    total += a;
+    for (const int v : t) area[v] += a / 3;
+  }
+  area.resize(static_cast<size_t>(count));
+  double coarse = 0;
+  for (const double a : area) coarse += a;
+  if (coarse > 0)
+    for (double& a : area) a *= total / coarse;
+  return area;
 }
 
 // A point and the surface point found for it face opposite ways: on a thin wall the nearest point
@@ -181,10 +205,12 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
     for (LoopStencils::InnerIterator it(rows, vertex); it; ++it) out.emplace_back(static_cast<int>(it.col()), weight * it.value());
   };
 
-  // balance_sides' unit: the input area a data point stands for. The data points start with the
-  // input's vertices (data_samples), so the input's triangles index them.
-  const double data_area_each =
-      options.balance_sides ? mesh_area({data.points, input_mesh_triangles, {}}) / static_cast<double>(data.points.size()) : 0.0;
+  // balance_sides' unit: the mean input area a data point stands for, so the weights average 1 and
+  // the spring weight keeps its meaning.
+  const bool balance = options.balance_sides;
+  double data_area_each = 0;
+  for (const double a : data.area) data_area_each += a;
+  data_area_each /= static_cast<double>(data.points.size());
 
   Residuals best;
   best.rms = INFINITY;
@@ -202,7 +228,7 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
     r.surface_owner.resize(static_cast<size_t>(limit.coarser_vertex_count));
     std::vector<Correspondence> pairs;
     pairs.reserve(data.points.size() + surface.positions.size());
-    double sum = 0;
+    double weighted_sum = 0, weight_total = 0;  // squared distances and weights, both sides
     for (size_t i = 0; i < data.points.size(); ++i) {
       const auto [point, primitive] = tree.closest_point_and_primitive(cg(data.points[i]));
       const int t = static_cast<int>(primitive - triangles.begin());
@@ -214,16 +240,17 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       c.stencil = merged(std::move(c.stencil));
       c.target = data.points[i];
       c.normal = unit_normal(p[tri[0]], p[tri[1]], p[tri[2]]);
-      if (!facing_away(c.normal, data.normals[i])) pairs.push_back(std::move(c));
+      if (balance) c.weight = data.area[i] / data_area_each;
       const double d = (eig(point) - data.points[i]).norm();
+      weighted_sum += c.weight * d * d;
+      weight_total += c.weight;
+      if (!facing_away(c.normal, data.normals[i])) pairs.push_back(std::move(c));
       r.data_to_surface[i] = d;
-      sum += d * d;
       r.max = std::max(r.max, d);
     }
     const std::vector<Eigen::Vector3d> surface_normals = vertex_normals(surface);
-    const double surface_weight =
-        options.balance_sides ? (mesh_area(surface) / limit.coarser_vertex_count) / data_area_each : 1.0;
-    const double data_sum = sum;
+    const std::vector<double> surface_area =
+        balance ? coarse_vertex_areas(surface, limit.coarser_vertex_count) : std::vector<double>{};
     // The surface's side: the limit points of level k-1's vertices (a quarter of level k's: enough
     // to watch the surface between data points, and the solve's cost grows with the samples).
     const size_t surface_samples = static_cast<size_t>(limit.coarser_vertex_count);
@@ -239,17 +266,15 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       stencil_of(static_cast<int>(v), 1.0, c.stencil);
       c.target = eig(point);
       c.normal = unit_normal(eig(face[0]), eig(face[1]), eig(face[2]));
-      c.weight = surface_weight;
-      if (!facing_away(c.normal, surface_normals[v])) pairs.push_back(std::move(c));
+      if (balance) c.weight = surface_area[v] / data_area_each;
       const double d = (eig(point) - surface.positions[v]).norm();
+      weighted_sum += c.weight * d * d;
+      weight_total += c.weight;
+      if (!facing_away(c.normal, surface_normals[v])) pairs.push_back(std::move(c));
       r.surface_to_data[v] = d;
-      sum += d * d;
       r.max = std::max(r.max, d);
     }
-    r.rms = std::sqrt(sum / static_cast<double>(data.points.size() + surface_samples));
-    if (options.balance_sides)
-      r.rms = std::sqrt((data_sum + surface_weight * (sum - data_sum)) /
-                        (static_cast<double>(data.points.size()) + surface_weight * static_cast<double>(surface_samples)));
+    r.rms = std::sqrt(weighted_sum / weight_total);
     // Stop after three rounds without a gain of 0.1 %; keep the best state seen.
     if (r.rms < (1 - 1e-3) * best.rms) stale = 0;
     else if (++stale >= 3) break;
