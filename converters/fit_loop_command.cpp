@@ -140,7 +140,7 @@ int run_fit_loop(const std::vector<std::string>& args) {
               << c.rounds << " rounds fitted (RMS at the fit's samples:";
     for (double rms : c.rms) std::cout << " " << rms;
     std::cout << " " << unit << "); "
-              << (m.connectivity_kept ? "round " + std::to_string(c.rounds_kept) + "'s fit kept"
+              << (m.connectivity_kept() ? "round " + std::to_string(c.rounds_kept) + "'s fit kept"
                                       : std::string("no round's fit was closer, the first fit kept"))
               << "\n";
   }

@@ -51,8 +51,7 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
         LoopFitReport refit;
         m.control = fit_loop_connectivity_rounds(input, m.control, m.fit, rounds, &refit, &m.connectivity);
         refit.iterations += m.fit.iterations;
-        m.connectivity_kept = m.connectivity.rounds_kept > 0;
-        if (m.connectivity_kept)
+        if (m.connectivity_kept())
           m.fit = refit;
         else
           m.fit.iterations = refit.iterations;
@@ -62,7 +61,7 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
   m.limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(m.control), request.levels), m.control.positions);
   // The starts measured the kept fit already, unless a tolerance, a saved control mesh or kept
   // connectivity moves took its place.
-  const bool measured = !request.saved_control && request.tolerance <= 0 && !m.connectivity_kept;
+  const bool measured = !request.saved_control && request.tolerance <= 0 && !m.connectivity_kept();
   m.limit_distance = measured ? kept_start(m.starts).distance : mesh_distance(m.limit, input).overall;
 
   // The starts made this decimation already (same count, nothing kept) unless a tolerance or a

@@ -39,7 +39,6 @@ struct LoopFitMeasure {
                                       // last round's decimation and fit, one start only)
   LoopFitReport fit;                  // the fit kept last (its iterations: all fits')
   ConnectivityRoundsReport connectivity;  // the moves tried and kept, the rounds' fits (no candidates: not run)
-  bool connectivity_kept = false;     // a round's fit beat the fit before the moves; the last such is the result
   int rounds = 1;                     // decimate-and-fit rounds (more with a tolerance)
   bool tolerance_met = false;         // with a tolerance: the fit is within it at its own samples
   DeviationStats limit_distance;      // two-sided, limit mesh to input (mesh_distance)
@@ -48,6 +47,9 @@ struct LoopFitMeasure {
   // Storage as the thesis counts it: floats, integers (triangle corners), tag integers.
   long control_floats = 0, control_integers = 0, control_tags = 0;
   long input_floats = 0, input_integers = 0;  // the welded input mesh
+
+  // A connectivity round's fit beat the fit before the moves; the last such is the result.
+  bool connectivity_kept() const { return connectivity.rounds_kept > 0; }
 };
 
 // Takes the triangles of an STL (or any mesh; unwelded is fine) and the request; returns the fit

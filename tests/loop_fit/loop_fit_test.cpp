@@ -395,7 +395,7 @@ TEST(MeasureLoopFit, ConnectivityMovesAreTriedAndKeepTheBetterFit) {
   EXPECT_GT(moved.connectivity.moves.candidates, 0);
   EXPECT_EQ(moved.control.positions.size(), 8u);
   EXPECT_LE(moved.fit.rms, plain.fit.rms);
-  if (!moved.connectivity_kept) {
+  if (!moved.connectivity_kept()) {
     EXPECT_EQ(moved.control.positions, plain.control.positions);
   }
 }
