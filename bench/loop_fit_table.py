@@ -3,7 +3,8 @@
 `cadnurbs fit-loop IN -o CONTROL.obj --control-vertices 200 [--connectivity]` on each part, one after the
 other. Prints a markdown table: input triangles, control vertices, RMS and max two-sided distance of
 the fitted limit surface and of the quadric decimation with as many vertices, their ratios (the issue
-asks RMS <= 0.5 and max <= 1), which of fit_loop_best_start's starts was kept, and the CPU and wall seconds of each run.
+asks RMS <= 0.5 and max <= 1), which of fit_loop_best_start's starts was kept, whether the last refit
+(refit_watching_spans) was kept, and the CPU and wall seconds of each run.
 
 usage: bench/loop_fit_table.py [--connectivity] [--cadnurbs BINARY] [PART...]
 (default binary: build/converters/cadnurbs, copied first since the build folder's may be relinked
@@ -42,11 +43,13 @@ def fit(binary, part, folder, connectivity):
     limit = re.search(r"limit surface .* RMS " + number + r" \S+, max " + number, out)
     qem = re.search(r"quadric decimation .* RMS " + number + r" \S+, max " + number, out)
     start = re.search(r"^start kept: (\w+)", out, re.M)
+    last = re.search(r"^last refit .*; (kept|not kept)", out, re.M)
     return {
         "triangles": int(triangles.group(1)), "control": int(control.group(1)),
         "rms": float(limit.group(1)), "max": float(limit.group(2)),
         "qem_rms": float(qem.group(1)), "qem_max": float(qem.group(2)),
         "start": {"features": "features kept", "plain": "plain, tagged", "guarded": "guarded, balanced"}[start.group(1)] if start else "",
+        "last_refit": last.group(1) if last else "",
         "wall": wall, "cpu": (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime),
     }
 
@@ -61,14 +64,14 @@ def main():
         binary = os.path.join(folder, "cadnurbs")
         shutil.copy2(options.cadnurbs, binary)
         print("| part | input triangles | control vertices | fit RMS | fit max | QEM RMS | QEM max "
-              "| RMS ratio | max ratio | passes | start kept | CPU s (wall s) |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+              "| RMS ratio | max ratio | passes | start kept | last refit | CPU s (wall s) |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         for part in options.parts:
             f = fit(binary, part, folder, options.connectivity)
             rms_ratio, max_ratio = f["rms"] / f["qem_rms"], f["max"] / f["qem_max"]
             print(f"| {os.path.basename(part)} | {f['triangles']} | {f['control']} | {f['rms']:.4g} | {f['max']:.4g} "
                   f"| {f['qem_rms']:.4g} | {f['qem_max']:.4g} | {rms_ratio:.3f} | {max_ratio:.3f} "
-                  f"| {'yes' if rms_ratio <= 0.5 and max_ratio <= 1 else 'no'} | {f['start']} | {f['cpu']:.0f} ({f['wall']:.0f}) |",
+                  f"| {'yes' if rms_ratio <= 0.5 and max_ratio <= 1 else 'no'} | {f['start']} | {f['last_refit']} | {f['cpu']:.0f} ({f['wall']:.0f}) |",
                   flush=True)
 
 

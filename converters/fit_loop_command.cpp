@@ -30,6 +30,8 @@ const char* kHelp =
     "--connectivity then tries edge swaps and crease and corner tag toggles, keeps those after which\n"
     "a local re-fit gets closer, and fits again; up to 4 such rounds, while each fit gains 1 % or more\n"
     "(much slower; not with a tolerance).\n"
+    "A last fit then also fits the limit points whose nearest point of IN faces away (a surface that\n"
+    "spans a gap); it is kept when its limit surface scores lower (not with a tolerance).\n"
     "--tolerance D (first start only) keeps more of IN's vertices where the surface stays farther\n"
     "than D, decimates and fits again, until it is within D (N is the first round's count).\n"
     "IN's vertices closer than TOL are welded first (default 1e-4 of the bounding-box diagonal).\n"
@@ -143,6 +145,12 @@ int run_fit_loop(const std::vector<std::string>& args) {
               << (m.connectivity_kept() ? "round " + std::to_string(c.rounds_kept) + "'s fit kept"
                                       : std::string("no round's fit was closer, the first fit kept"))
               << "\n";
+  }
+  if (m.span_refit) {
+    const DeviationStats& d = m.span_refit->distance;
+    std::cout << "last refit with every limit point fitted, those facing away too: two-sided RMS / max "
+              << message_number(d.rms) << " / " << message_number(d.max) << " " << unit << "; "
+              << (m.span_refit->kept ? "kept" : "not kept, the fit before it was closer") << "\n";
   }
   std::cout << "limit surface (" << request.levels << " levels, " << m.limit.triangles.size()
             << " triangles) to input, two-sided: RMS " << m.limit_distance.rms << " " << unit << ", max "

@@ -24,12 +24,12 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
   m.input_vertices = static_cast<int>(input.positions.size());
   m.input_triangles = static_cast<int>(input.triangles.size());
 
+  LoopFitOptions options;
+  options.levels = request.levels;
   if (request.saved_control) {
     m.control = *request.saved_control;
   } else {
     const double sharp_angle = request.crease_angle_degrees * M_PI / 180.0;
-    LoopFitOptions options;
-    options.levels = request.levels;
     if (request.tolerance > 0) {
       LoopToleranceReport rounds;
       m.control = fit_loop_to_tolerance(input, request.control_vertices, sharp_angle, request.tolerance, options, &rounds);
@@ -61,7 +61,8 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
   m.limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(m.control), request.levels), m.control.positions);
   // The starts measured the kept fit already, unless a tolerance, a saved control mesh or kept
   // connectivity moves took its place.
-  const bool measured = !request.saved_control && request.tolerance <= 0 && !m.connectivity_kept();
+  const bool from_starts = !request.saved_control && request.tolerance <= 0;
+  const bool measured = from_starts && !m.connectivity_kept();
   m.limit_distance = measured ? kept_start(m.starts).distance : mesh_distance(m.limit, input).overall;
 
   // The starts made this decimation already (same count, nothing kept) unless a tolerance or a
@@ -73,6 +74,20 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
   } else {
     m.qem = as_triangle_mesh(decimate_control_mesh(input, count, -1));
     m.qem_distance = mesh_distance(m.qem, input).overall;
+  }
+
+  if (from_starts) {
+    options.balance_sides = start_balances_sides(m.starts.kept);  // as the kept fit was fitted
+    SpanRefitReport span;
+    m.control = refit_watching_spans(input, m.control, m.limit_distance, m.qem_distance, options, &span);
+    const int iterations = m.fit.iterations + span.fit.iterations;
+    if (span.kept) {
+      m.fit = span.fit;
+      m.limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(m.control), request.levels), m.control.positions);
+      m.limit_distance = span.distance;
+    }
+    m.fit.iterations = iterations;
+    m.span_refit = span;
   }
 
   m.control_floats = 3L * static_cast<long>(m.control.positions.size());

@@ -2,11 +2,13 @@
 // The whole Loop fit of a triangle mesh, as `fit-loop` and `report` run it: weld, decimate with
 // features kept, fit, and measure the limit surface against the input next to a plain quadric
 // decimation with as many vertices (the thing a user would otherwise publish).
+#include <optional>
 #include <string>
 
 #include "analysis/loop_fit/fit_loop_to_tolerance.hpp"
 #include "analysis/loop_fit/fit_loop_best_start.hpp"
 #include "analysis/loop_fit/fit_loop_connectivity_rounds.hpp"
+#include "analysis/loop_fit/refit_watching_spans.hpp"
 #include "analysis/measure_deviation.hpp"
 
 namespace cadnurbs {
@@ -39,6 +41,9 @@ struct LoopFitMeasure {
                                       // last round's decimation and fit, one start only)
   LoopFitReport fit;                  // the fit kept last (its iterations: all fits')
   ConnectivityRoundsReport connectivity;  // the moves tried and kept, the rounds' fits (no candidates: not run)
+  // Fitted from the starts (no tolerance, no saved control mesh): the last refit with every limit
+  // point fitted (refit_watching_spans), the result when kept.
+  std::optional<SpanRefitReport> span_refit;
   int rounds = 1;                     // decimate-and-fit rounds (more with a tolerance)
   bool tolerance_met = false;         // with a tolerance: the fit is within it at its own samples
   DeviationStats limit_distance;      // two-sided, limit mesh to input (mesh_distance)

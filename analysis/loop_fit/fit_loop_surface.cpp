@@ -270,7 +270,8 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       const double d = (eig(point) - surface.positions[v]).norm();
       weighted_sum += c.weight * d * d;
       weight_total += c.weight;
-      if (!facing_away(c.normal, surface_normals[v])) pairs.push_back(std::move(c));
+      if (options.fit_limit_points_facing_away || !facing_away(c.normal, surface_normals[v]))
+        pairs.push_back(std::move(c));
       r.surface_to_data[v] = d;
       r.max = std::max(r.max, d);
     }
