@@ -147,7 +147,7 @@ int run_fit_loop(const std::vector<std::string>& args) {
               << "\n";
   }
   if (m.span_refit) {
-    const DeviationStats& d = m.span_refit->distance;
+    const DeviationStats& d = m.span_refit->refit.distance;
     std::cout << "last refit with every limit point fitted, those facing away too: two-sided RMS / max "
               << message_number(d.rms) << " / " << message_number(d.max) << " " << unit << "; "
               << (m.span_refit->kept ? "kept" : "not kept, the fit before it was closer") << "\n";

@@ -80,11 +80,11 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
     options.balance_sides = start_balances_sides(m.starts.kept);  // as the kept fit was fitted
     SpanRefitReport span;
     m.control = refit_watching_spans(input, m.control, m.limit_distance, m.qem_distance, options, &span);
-    const int iterations = m.fit.iterations + span.fit.iterations;
+    const int iterations = m.fit.iterations + span.refit.fit.iterations;
     if (span.kept) {
-      m.fit = span.fit;
+      m.fit = span.refit.fit;
       m.limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(m.control), request.levels), m.control.positions);
-      m.limit_distance = span.distance;
+      m.limit_distance = span.refit.distance;
     }
     m.fit.iterations = iterations;
     m.span_refit = span;

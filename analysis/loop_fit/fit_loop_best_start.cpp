@@ -11,17 +11,18 @@ namespace cadnurbs {
 
 namespace {
 
-LoopControlMesh fit_and_measure(const TriangleMesh& welded, const LoopControlMesh& start, const LoopFitOptions& options,
-                                LoopStartFit& out) {
+
+double share(double figure, double decimations) { return decimations > 0 ? figure / decimations : figure; }
+
+}  // namespace
+
+LoopControlMesh fit_loop_and_measure(const TriangleMesh& welded, const LoopControlMesh& start, const LoopFitOptions& options,
+                                     LoopStartFit& out) {
   LoopControlMesh fitted = fit_loop_surface(welded, start, options, &out.fit);
   const TriangleMesh limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(fitted), options.levels), fitted.positions);
   out.distance = mesh_distance(limit, welded).overall;
   return fitted;
 }
-
-double share(double figure, double decimations) { return decimations > 0 ? figure / decimations : figure; }
-
-}  // namespace
 
 double start_score(const DeviationStats& fit, const DeviationStats& decimation) {
   return share(fit.rms, decimation.rms) + share(fit.max, decimation.max);
@@ -38,7 +39,7 @@ LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_verti
     return o;
   };
   const LoopControlMesh feature_start = decimate_control_mesh(welded, target_vertices, sharp_angle, &r.decimation, keep);
-  LoopControlMesh best = fit_and_measure(welded, feature_start, options_for(LoopStart::features), r.features);
+  LoopControlMesh best = fit_loop_and_measure(welded, feature_start, options_for(LoopStart::features), r.features);
   const LoopStartFit* best_fit = &r.features;
 
   const int reached = static_cast<int>(feature_start.positions.size());
@@ -48,7 +49,7 @@ LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_verti
   auto beats = [&](const LoopStartFit& a, const LoopStartFit& b) {
     return start_score(a.distance, r.plain_decimation_distance) < start_score(b.distance, r.plain_decimation_distance);
   };
-  LoopControlMesh fitted = fit_and_measure(welded, tag_sharp_edges(r.plain_decimation, sharp_angle), options_for(LoopStart::plain),
+  LoopControlMesh fitted = fit_loop_and_measure(welded, tag_sharp_edges(r.plain_decimation, sharp_angle), options_for(LoopStart::plain),
                                           r.plain);
   if (beats(r.plain, *best_fit)) {
     best = std::move(fitted);
@@ -58,7 +59,7 @@ LoopControlMesh fit_loop_best_start(const TriangleMesh& welded, int target_verti
 
   const GuardedDecimation guarded = decimate_within_distance(welded, static_cast<int>(plain.positions.size()), keep);
   r.guard = guarded.guard;
-  fitted = fit_and_measure(welded, tag_sharp_edges(guarded.mesh, sharp_angle), options_for(LoopStart::guarded), r.guarded);
+  fitted = fit_loop_and_measure(welded, tag_sharp_edges(guarded.mesh, sharp_angle), options_for(LoopStart::guarded), r.guarded);
   if (beats(r.guarded, *best_fit)) {
     best = std::move(fitted);
     r.kept = LoopStart::guarded;

@@ -37,6 +37,11 @@ struct LoopStartsReport {
   DeviationStats plain_decimation_distance;  // it to the input, two-sided (mesh_distance's overall)
 };
 
+// Takes a welded mesh, a start and fit options; returns fit_loop_surface's control mesh, its report
+// and its limit surface's (options.levels refinements) two-sided distance to the mesh in `out`.
+LoopControlMesh fit_loop_and_measure(const TriangleMesh& welded, const LoopControlMesh& start, const LoopFitOptions& options,
+                                     LoopStartFit& out);
+
 // How far a start's fit stands from the plain quadric decimation at as many vertices: its limit
 // surface's RMS and max, each as a share of the decimation's, summed (a figure the decimation has
 // as 0 counts as it is). Lower is better. Both terms count, so neither a slightly lower max nor a

@@ -1,9 +1,5 @@
 #include "analysis/loop_fit/refit_watching_spans.hpp"
 
-#include "analysis/loop_fit/fit_loop_best_start.hpp"
-#include "analysis/mesh_distance.hpp"
-#include "analysis/subdivision/loop_limit_surface.hpp"
-
 namespace cadnurbs {
 
 LoopControlMesh refit_watching_spans(const TriangleMesh& input, const LoopControlMesh& fitted,
@@ -12,10 +8,8 @@ LoopControlMesh refit_watching_spans(const TriangleMesh& input, const LoopContro
   LoopFitOptions watching = options;
   watching.fit_limit_points_facing_away = true;
   SpanRefitReport r;
-  LoopControlMesh refit = fit_loop_surface(input, fitted, watching, &r.fit);
-  const TriangleMesh limit = evaluate_limit_mesh(loop_limit_mesh(loop_topology(refit), options.levels), refit.positions);
-  r.distance = mesh_distance(limit, input).overall;
-  r.kept = start_score(r.distance, decimation_distance) < start_score(fitted_distance, decimation_distance);
+  LoopControlMesh refit = fit_loop_and_measure(input, fitted, watching, r.refit);
+  r.kept = start_score(r.refit.distance, decimation_distance) < start_score(fitted_distance, decimation_distance);
   if (report) *report = r;
   return r.kept ? refit : fitted;
 }

@@ -7,15 +7,13 @@
 // after three connectivity rounds, the surface sagged 15.8 mm into the half-bore against the quadric
 // decimation's 14.9; refitted so, 0.481 / 0.758 of the decimation's RMS / max, from 0.498 / 1.061.
 // Fitted so from the start instead, the rounds went astray (stop 33), hence once, at the end.
-#include "analysis/loop_fit/fit_loop_surface.hpp"
-#include "analysis/measure_deviation.hpp"
+#include "analysis/loop_fit/fit_loop_best_start.hpp"
 
 namespace cadnurbs {
 
 struct SpanRefitReport {
-  LoopFitReport fit;         // the refit's, at its own samples
-  DeviationStats distance;   // its limit surface to the input, two-sided (mesh_distance's overall)
-  bool kept = false;         // its start_score against the decimation was lower than the given fit's
+  LoopStartFit refit;   // the refit's report and its limit surface's two-sided distance to the input
+  bool kept = false;    // its start_score against the decimation was lower than the given fit's
 };
 
 // Takes a welded input mesh, a fitted control mesh, its limit surface's two-sided distance to the

@@ -268,14 +268,14 @@ TEST(RefitWatchingSpans, PullsASpanOverAnOpeningAndKeepsOnlyACloserFit) {
   SpanRefitReport report;
   const LoopControlMesh refit = refit_watching_spans(cup, fitted, before, quadric, options, &report);
   EXPECT_TRUE(report.kept);
-  EXPECT_LT(report.distance.rms, 0.5 * before.rms);
-  EXPECT_LT(report.distance.max, 0.75 * before.max);
+  EXPECT_LT(report.refit.distance.rms, 0.5 * before.rms);
+  EXPECT_LT(report.refit.distance.max, 0.75 * before.max);
   const DeviationStats after = distance(refit);
-  EXPECT_DOUBLE_EQ(after.rms, report.distance.rms);  // the mesh returned is the one measured
-  EXPECT_DOUBLE_EQ(after.max, report.distance.max);
+  EXPECT_DOUBLE_EQ(after.rms, report.refit.distance.rms);  // the mesh returned is the one measured
+  EXPECT_DOUBLE_EQ(after.max, report.refit.distance.max);
 
   // Given the refit with its RMS flattered by half: no refit scores lower, so the given mesh comes back.
-  DeviationStats flattering = report.distance;
+  DeviationStats flattering = report.refit.distance;
   flattering.rms *= 0.5;
   SpanRefitReport again;
   const LoopControlMesh same = refit_watching_spans(cup, refit, flattering, quadric, options, &again);
