@@ -11,7 +11,6 @@ namespace cadnurbs {
 
 namespace {
 
-
 double share(double figure, double decimations) { return decimations > 0 ? figure / decimations : figure; }
 
 }  // namespace
