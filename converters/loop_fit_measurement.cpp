@@ -41,12 +41,13 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
       m.control = fit_loop_best_start(input, request.control_vertices, sharp_angle, options, &m.starts);
       m.fit = kept_start(m.starts).fit;
       m.fit.iterations = m.starts.features.fit.iterations + m.starts.plain.fit.iterations + m.starts.guarded.fit.iterations;
+      // Every later fit weights as the kept start's did, so their RMS compare alike.
+      options.balance_sides = start_balances_sides(m.starts.kept);
       if (request.improve_connectivity) {
         ConnectivityRoundsOptions rounds;
         rounds.moves.levels = request.levels;
         rounds.moves.sweeps = 1;
-        rounds.fit = options;  // the kept start's weighting, so the RMS compare alike
-        rounds.fit.balance_sides = start_balances_sides(m.starts.kept);
+        rounds.fit = options;
         rounds.max_rounds = request.connectivity_rounds;
         LoopFitReport refit;
         m.control = fit_loop_connectivity_rounds(input, m.control, m.fit, rounds, &refit, &m.connectivity);
@@ -77,7 +78,6 @@ LoopFitMeasure measure_loop_fit(const TriangleMesh& triangles, const LoopFitRequ
   }
 
   if (from_starts) {
-    options.balance_sides = start_balances_sides(m.starts.kept);  // as the kept fit was fitted
     SpanRefitReport span;
     m.control = refit_watching_spans(input, m.control, m.limit_distance, m.qem_distance, options, &span);
     const int iterations = m.fit.iterations + span.refit.fit.iterations;
