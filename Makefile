@@ -1,21 +1,30 @@
-# Thin wrapper: `make demo` installs, builds and runs the demo; `make test` builds and runs ctest.
+# Thin wrapper (README.md): `make demo` installs, builds the cadnurbs command alone and runs the demo;
+# `make test` builds everything and runs the fast tier of the tests (what CI runs); `make test-long` the
+# long tier (tests/README.md says which tier holds what).
 BUILD ?= build
 JOBS ?= $(shell nproc)
+CTEST = ctest --test-dir $(BUILD) --output-on-failure --timeout 900 -j $(JOBS)
 
-.PHONY: setup build demo test clean
+.PHONY: setup configure build demo test test-long clean
 
 setup:
 	bash scripts/setup.sh
 
-build: setup
+configure: setup
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo
+
+build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-demo: build
+demo: configure
+	cmake --build $(BUILD) -j $(JOBS) --target cadnurbs
 	$(BUILD)/converters/cadnurbs demo -o $(BUILD)/demo
 
 test: build
-	ctest --test-dir $(BUILD) --output-on-failure --timeout 900 -j $(JOBS)
+	$(CTEST) -L '^tier:fast$$'
+
+test-long: build
+	$(CTEST) -L '^tier:long$$'
 
 clean:
 	rm -rf $(BUILD)

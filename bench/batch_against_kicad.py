@@ -27,7 +27,7 @@ def sizes(path):
 
 
 def reason(error):
-    """The error's common form, as the batch's HTML report groups failures (analysis/report/library_summary)."""
+    """The error's common form, as the batch's HTML report groups failures (report/library_summary)."""
     error = re.sub(r"^((line \d+|entity #\d+|object \d+( \([^)]*\))?|face \d+)(, [^:]*)?|[^:]*/[^:]*|[^\s:]+\.[A-Za-z0-9]+): ",
                    "", error, count=1)
     error = re.sub(r"\s*\([^()]*\)\s*$", "", error)

@@ -21,8 +21,8 @@
 #include <numbers>
 #include <random>
 
-#include "analysis/fit_curve.hpp"
-#include "analysis/fit_surface.hpp"
+#include "analysis/fitting/fit_curve.hpp"
+#include "analysis/fitting/fit_surface.hpp"
 #include "core/knot_vector.hpp"
 
 namespace {

@@ -28,9 +28,9 @@
 #include <thread>
 #include <vector>
 
-#include "analysis/crease_normals.hpp"
-#include "analysis/orient_faces.hpp"
-#include "analysis/weld_vertices.hpp"
+#include "analysis/normals/crease_normals.hpp"
+#include "analysis/normals/orient_faces.hpp"
+#include "analysis/mesh/weld_vertices.hpp"
 #include "core/worker_threads.hpp"
 #include "formats/stl/stl_reader.hpp"
 #include "formats/stl/stl_writer.hpp"

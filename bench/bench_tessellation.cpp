@@ -23,12 +23,12 @@
 #include <string>
 #include <vector>
 
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/measure_deviation.hpp"
-#include "analysis/sample_trim_segment.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/measure/measure_deviation.hpp"
+#include "analysis/eval/sample_trim_segment.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "core/bounding_box.hpp"
 #include "formats/brep/occt_setup.hpp"
 #include "formats/brep/trimmed_surface_to_face.hpp"

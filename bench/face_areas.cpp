@@ -4,7 +4,7 @@
 //   face_areas [--fraction F] [--list] PART...      D = F x the part's bounding-box diagonal (1e-3)
 //
 // Per part: faces, how many differ by more than 0.1 % (0.5 % under 1 mm^2) above and below, the worst
-// differences, and how many of those lie beyond the allowance of analysis/face_area_check (the boundary
+// differences, and how many of those lie beyond the allowance of analysis/measure/face_area_check (the boundary
 // band and the curvature term).
 #include <cstdio>
 #include <cstdlib>
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/tessellate_to_deviation.hpp"
-#include "analysis/face_area_check.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
+#include "analysis/measure/face_area_check.hpp"
 #include "converters/file_formats.hpp"
 #include "core/bounding_box.hpp"
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "converters/commands.hpp"
+#include "converters/command_line.hpp"
 #include "converters/walled_read.hpp"
 
 using namespace cadnurbs;
@@ -33,8 +34,9 @@ int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (!args.empty() && args[0] == "__read-brep") return run_read_brep_child({args.begin() + 1, args.end()});
   if (args.size() == 3 && (args[0] == "in-process" || args[0] == "walled")) {
-    enable_read_wall(args[0] == "walled");
-    return run_convert({args[1], "-o", args[2]});
+    CommandContext context;
+    context.read_wall = args[0] == "walled";
+    return run_convert({args[1], "-o", args[2]}, context);
   }
   const int rounds = args.empty() ? 3 : std::atoi(args[0].c_str());
   std::vector<std::string> files(args.size() > 1 ? args.begin() + 1 : args.end(), args.end());  // default: all

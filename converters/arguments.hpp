@@ -1,11 +1,15 @@
 #pragma once
 // A small command-line argument reader shared by the subcommands: positional arguments and
-// --name value / --flag options, with one-line errors for unknown or malformed options.
+// --name value / --flag options, with one-line errors for unknown or malformed options. Each command
+// describes itself once (CommandSpec: its forms, text and table of options); the parser, its --help and
+// `cadnurbs --help` all read that one table, so they cannot disagree.
 #include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "converters/limited_child.hpp"
 
 namespace cadnurbs {
 
@@ -25,17 +29,50 @@ struct Arguments {
   int integer(const std::string& name, int fallback) const;        // refuses non-integers
 };
 
-// --time-limit S and --memory-limit MB of convert, info and report (value options of theirs): sets
-// read_limits() (converters/walled_read) for the STEP/IGES reads. Refuses (UsageError) a limit that is not
-// positive, or a memory limit above 2^40 MB.
-void apply_read_limits(const Arguments& a);
+// One option of a command. "output" is written and accepted as -o as well as --output.
+struct OptionSpec {
+  std::string name;   // without the "--"
+  std::string value;  // the placeholder of its value, such as "D"; empty: a flag
+  // What it does, lines already wrapped for the help column (22). Empty: the command's synopsis names
+  // the option itself and its description tells what it does (no line of its own in --help).
+  std::string help;
+};
 
-// Their help lines.
-extern const char* const kReadLimitHelp;
+// A command as the parser, its --help and `cadnurbs --help` see it.
+struct CommandSpec {
+  std::string name;  // "convert"
+  // What follows "cadnurbs NAME", one line per form of the command, such as "IN -o OUT [options]".
+  // "[options]" stands for every option that no form names.
+  std::string synopsis;
+  std::string description;  // the paragraphs before the options
+  std::vector<OptionSpec> options;  // --help is every command's flag besides
+  std::string epilogue;     // the text after the options, may be empty
+};
 
-// `value_options` take a value ("-o" counts as "--output"); `flag_options` take none. Throws
-// UsageError "<command>: unknown option '--x'" and the like.
-Arguments parse_arguments(const std::string& command, const std::vector<std::string>& args,
-                          const std::set<std::string>& value_options, const std::set<std::string>& flag_options);
+// --time-limit S and --memory-limit MB of convert, info and report: the limits of the STEP/IGES reads
+// (read_limits).
+const std::vector<OptionSpec>& read_limit_options();
+
+// `options` followed by read_limit_options().
+std::vector<OptionSpec> with_read_limits(std::vector<OptionSpec> options);
+
+// --time-limit and --memory-limit as the limits of the reading child (converters/walled_read), the
+// defaults where they are not given. Refuses (UsageError) a limit that is not positive, or a memory limit
+// above 2^40 MB.
+ProcessLimits read_limits(const Arguments& a);
+
+// The options of `spec` that take a value take one ("-o" counts as "--output"), the others none; "--help"
+// is a flag of every command. Throws UsageError "unknown option '--x' (see cadnurbs NAME --help)",
+// "option --x needs a value", "option --x takes no value".
+Arguments parse_arguments(const CommandSpec& spec, const std::vector<std::string>& args);
+
+// The forms of the command, one or more lines each starting "cadnurbs NAME ", "[options]" spelled out as
+// "[--name VALUE]" for each option, wrapped at 100 columns with the continuation lines indented to the
+// first argument. No newline at the end.
+std::string command_synopsis(const CommandSpec& spec);
+
+// `cadnurbs NAME --help`: "usage: " and the synopsis, the description, a block per option with help
+// ("  --deviation D       that maximum ...", further lines indented to the help column), the epilogue.
+std::string command_help(const CommandSpec& spec);
 
 }  // namespace cadnurbs

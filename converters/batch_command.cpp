@@ -10,32 +10,40 @@
 
 namespace cadnurbs {
 
-namespace {
+const CommandSpec& batch_command_spec() {
+  static const CommandSpec spec = {
+      "batch",
+      "IN_DIR -o OUT_DIR [options]\n"
+      "--merge OUT_DIR",
+      "Converts every part under IN_DIR (a file named as an input format, or holding one when its name\n"
+      "says nothing), each in a worker process of its own, N at a time, into OUT_DIR's mirror of IN_DIR:\n"
+      "OUT_DIR/<part>.<ext> for each output and OUT_DIR/<part>.json, the part's record (the report's\n"
+      "schema, docs/report.md, plus a \"batch\" object: content hash, options, seconds). A part that fails,\n"
+      "crashes, hangs or runs out of memory is recorded with its reason and the batch goes on. A second\n"
+      "run skips the parts whose record has the same content hash and options, except those that\n"
+      "exceeded a time or memory limit, which it does again. Ends with the combined\n"
+      "report: OUT_DIR/report.md, report.json, report.csv and report.html (library-wide charts).",
+      {
+          {"output", "OUT_DIR", ""},
+          {"jobs", "N", "workers at a time (default: the number of cores)"},
+          {"to", "EXT,...", "outputs per part (default x3dv; any output extension of convert)"},
+          {"inputs", "EXT,...",
+           "only the parts of these input formats (such as step,iges: a library's\n"
+           "shipped meshes left out); default: every part"},
+          {"deviation", "D", "the report's maximum mesh deviation D in millimetres (default 1)"},
+          {"timeout", "S", "per part, wall and CPU time (default 300)"},
+          {"memory", "MB", "per part, address space (default 4096)"},
+          {"shard", "K/N",
+           "only the K-th (0 to N-1) of N disjoint slices of the parts (cluster array\n"
+           "tasks); its report is OUT_DIR/report-K-of-N.*"},
+          {"merge", "", "the combined report of every record under OUT_DIR (all shards')"},
+      },
+      "Exit status 0 when every part converted, 3 when some failed.",
+  };
+  return spec;
+}
 
-const char* kHelp =
-    "usage: cadnurbs batch IN_DIR -o OUT_DIR [--jobs N] [--to EXT,...] [--inputs EXT,...]\n"
-    "                      [--deviation D] [--timeout S] [--memory MB] [--shard K/N]\n"
-    "       cadnurbs batch --merge OUT_DIR\n"
-    "Converts every part under IN_DIR (a file named as an input format, or holding one when its name\n"
-    "says nothing), each in a worker process of its own, N at a time, into OUT_DIR's mirror of IN_DIR:\n"
-    "OUT_DIR/<part>.<ext> for each output and OUT_DIR/<part>.json, the part's record (the report's\n"
-    "schema, docs/report.md, plus a \"batch\" object: content hash, options, seconds). A part that fails,\n"
-    "crashes, hangs or runs out of memory is recorded with its reason and the batch goes on. A second\n"
-    "run skips the parts whose record has the same content hash and options, except those that\n"
-    "exceeded a time or memory limit, which it does again. Ends with the combined\n"
-    "report: OUT_DIR/report.md, report.json, report.csv and report.html (library-wide charts).\n"
-    "  --jobs N        workers at a time (default: the number of cores)\n"
-    "  --to EXT,...    outputs per part (default x3dv; any output extension of convert)\n"
-    "  --inputs EXT,...\n"
-    "                  only the parts of these input formats (such as step,iges: a library's shipped\n"
-    "                  meshes left out); default: every part\n"
-    "  --deviation D   the report's maximum mesh deviation D in millimetres (default 1)\n"
-    "  --timeout S     per part, wall and CPU time (default 300)\n"
-    "  --memory MB     per part, address space (default 4096)\n"
-    "  --shard K/N     only the K-th (0 to N-1) of N disjoint slices of the parts (cluster array tasks);\n"
-    "                  its report is OUT_DIR/report-K-of-N.*\n"
-    "  --merge         the combined report of every record under OUT_DIR (all shards')\n"
-    "Exit status 0 when every part converted, 3 when some failed.\n";
+namespace {
 
 constexpr int kSomeFailed = 3;
 
@@ -51,11 +59,10 @@ std::vector<std::string> split_list(const std::string& text) {
 
 }  // namespace
 
-int run_batch(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments(
-      "batch", args, {"output", "jobs", "to", "inputs", "deviation", "timeout", "memory", "shard"}, {"merge", "help"});
+int run_batch(const std::vector<std::string>& args, const CommandContext& context) {
+  const Arguments a = parse_arguments(batch_command_spec(), args);
   if (a.has("help")) {
-    std::cout << kHelp;
+    std::cout << command_help(batch_command_spec());
     return 0;
   }
   if (a.has("merge")) {
@@ -67,6 +74,9 @@ int run_batch(const std::vector<std::string>& args) {
   }
   if (a.positional.size() != 1 || !a.has("output")) throw UsageError("needs one IN_DIR and -o OUT_DIR (see --help)");
   BatchOptions options;
+  options.read.brep.walled = context.read_wall;
+  options.read.brep.child_stage_hook = context.child_stage_hook;
+  options.read.brep.always_exec = context.always_exec;
   options.in_dir = a.positional[0];
   options.out_dir = a.value("output");
   options.jobs = a.integer("jobs", static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));

@@ -10,32 +10,43 @@
 
 namespace cadnurbs {
 
-namespace {
-std::string help() {
-  std::string set;
-  for (const auto& ext : capping_extensions()) set += " " + ext;
-  return
-    "usage: cadnurbs capping --shape NAME -o OUT [options]\n"
-    "Generates a stair capping (seed 001, ch. 4): the handrail profile swept along a path as one\n"
-    "exact rational quadratic NURBS, the handrail connections closed by trimmed planar lids.\n"
-    "  --shape NAME             capping-90, capping-end, capping-post, capping-moulded, or 'all'\n"
-    "  -o OUT                   a file (" + extension_list(false) + ")\n"
-    "                           or, with a trailing '/' or an existing directory, a folder that\n"
-    "                           gets NAME with each of" + set + "\n"
-    "  --path FILE --profile FILE   outlines in the text format of samples/shapes/README.md\n"
-    "                           (instead of a bundled shape; NAME names the result)\n"
-    "  --max-chord-deviation D  STL: arcs divided so no chord is farther than D mm from its arc\n"
-    "                           (default 0.1)\n"
-    "  --without-lids           NURBS: the swept body alone, connections left open (for viewers\n"
-    "                           that ignore trimming)\n";
+const CommandSpec& capping_command_spec() {
+  static const CommandSpec spec = [] {
+    std::string set;
+    for (const auto& ext : capping_extensions()) set += " " + ext;
+    return CommandSpec{
+        "capping",
+        "--shape NAME -o OUT [options]",
+        "Generates a stair capping (seed 001, ch. 4): the handrail profile swept along a path as one\n"
+        "exact rational quadratic NURBS, the handrail connections closed by trimmed planar lids.",
+        {
+            {"shape", "NAME", "capping-90, capping-end, capping-post, capping-moulded, or 'all'"},
+            {"output", "OUT",
+             "a file (" + extension_list(false) + ")\n"
+             "or, with a trailing '/' or an existing directory, a folder that\n"
+             "gets NAME with each of" + set},
+            {"path", "FILE",
+             "with --profile FILE: the outlines of the path and of the profile in the\n"
+             "text format of samples/shapes/README.md (instead of a bundled shape; NAME\n"
+             "names the result)"},
+            {"profile", "FILE", "the profile's outline, with --path"},
+            {"max-chord-deviation", "D",
+             "STL: arcs divided so no chord is farther than D mm from its arc\n"
+             "(default 0.1)"},
+            {"without-lids", "",
+             "NURBS: the swept body alone, connections left open (for viewers\n"
+             "that ignore trimming; one file, not a folder)"},
+        },
+        "",
+    };
+  }();
+  return spec;
 }
-}  // namespace
 
-int run_capping(const std::vector<std::string>& args) {
-  const Arguments a =
-      parse_arguments("capping", args, {"shape", "output", "path", "profile", "max-chord-deviation"}, {"help", "without-lids"});
+int run_capping(const std::vector<std::string>& args, const CommandContext&) {
+  const Arguments a = parse_arguments(capping_command_spec(), args);
   if (a.has("help")) {
-    std::cout << help();
+    std::cout << command_help(capping_command_spec());
     return 0;
   }
   if (!a.has("shape") || !a.has("output") || !a.positional.empty())

@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "converters/arguments.hpp"
-#include "analysis/report/report_formats.hpp"
+#include "report/report_formats.hpp"
 #include "converters/capping_files.hpp"
 #include "converters/commands.hpp"
 #include "converters/part_measurement.hpp"
@@ -12,24 +12,32 @@
 
 namespace cadnurbs {
 
-namespace {
-const char* kHelp =
-    "usage: cadnurbs demo [-o DIR]\n"
-    "The main job on the bundled samples: generates every bundled stair capping as NURBS\n"
-    "(.wrl .x3dv .x3d) and as STL (thesis chord rule, 1 mm), and prints for each the counts the\n"
-    "thesis uses (seed 001, 6.1): control points, knots, and floats = 4 per control point (x, y, z,\n"
-    "w) + 1 per knot, against 3 floats per vertex of the triangle mesh. It ends with the storage\n"
-    "report of the cappings (cadnurbs report at D = 1 mm: bytes of files written and read back),\n"
-    "written to DIR/report.md, and prints its table. Default DIR: cadnurbs-demo.\n";
+// The description tells what DIR is: -o needs no line of its own.
+const CommandSpec& demo_command_spec() {
+  static const CommandSpec spec = {
+      "demo",
+      "[-o DIR]",
+      "The main job on the bundled samples: generates every bundled stair capping as NURBS\n"
+      "(.wrl .x3dv .x3d) and as STL (thesis chord rule, 1 mm), and prints for each the counts the\n"
+      "thesis uses (seed 001, 6.1): control points, knots, and floats = 4 per control point (x, y, z,\n"
+      "w) + 1 per knot, against 3 floats per vertex of the triangle mesh. It ends with the storage\n"
+      "report of the cappings (cadnurbs report at D = 1 mm: bytes of files written and read back),\n"
+      "written to DIR/report.md, and prints its table. Default DIR: cadnurbs-demo.",
+      {{"output", "DIR", ""}},
+      "",
+  };
+  return spec;
+}
 
+namespace {
 constexpr double kDemoChordDeviation = 1.0;  // the thesis's mesh comparison uses <= 1 mm
 constexpr double kFineChordDeviation = 0.1;  // and a finer mesh, for how the balance moves
 }  // namespace
 
-int run_demo(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("demo", args, {"output"}, {"help"});
+int run_demo(const std::vector<std::string>& args, const CommandContext&) {
+  const Arguments a = parse_arguments(demo_command_spec(), args);
   if (a.has("help")) {
-    std::cout << kHelp;
+    std::cout << command_help(demo_command_spec());
     return 0;
   }
   const std::string dir = a.value("output", "cadnurbs-demo");

@@ -2,9 +2,9 @@
 
 #include <filesystem>
 
-#include "analysis/mesh_encoding.hpp"
-#include "analysis/tessellation_hints.hpp"
-#include "analysis/weld_exact.hpp"
+#include "report/smallest_compressed_mesh.hpp"
+#include "analysis/tessellation/plan_tessellation_hints.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "converters/walled_read.hpp"
 #include "core/bounding_box.hpp"
 #include "core/geometry_error.hpp"
@@ -54,10 +54,14 @@ TriangleMesh flatten_meshes(const Scene& scene, const std::string& path) {
 }
 
 // Behind the wall in the cadnurbs command (a crash or hang in OCCT costs a child process), see walled_read.
-BrepTranslation read_brep_step(const std::string& path, bool) { return read_brep(path, "STEP"); }
-BrepTranslation read_brep_iges(const std::string& path, bool) { return read_brep(path, "IGES"); }
+BrepTranslation read_brep_step(const std::string& path, const SceneReadOptions& options) {
+  return read_brep(path, "STEP", options.brep);
+}
+BrepTranslation read_brep_iges(const std::string& path, const SceneReadOptions& options) {
+  return read_brep(path, "IGES", options.brep);
+}
 
-BrepTranslation read_mesh_stl(const std::string& path, bool) {
+BrepTranslation read_mesh_stl(const std::string& path, const SceneReadOptions&) {
   BrepTranslation read;
   read.scene.root.name = std::filesystem::path(path).stem().string();
   read.scene.root.shapes.push_back({read.scene.root.name, read_stl(path), std::nullopt});
@@ -66,7 +70,7 @@ BrepTranslation read_mesh_stl(const std::string& path, bool) {
 
 // .3dm: faces written as Rhino's render meshes are fallbacks; faces left out or repaired are reported as
 // repairs ("object N face K: ..."); the scene's trims were checked face by face while it was built.
-BrepTranslation read_rhino_3dm(const std::string& path, bool) {
+BrepTranslation read_rhino_3dm(const std::string& path, const SceneReadOptions&) {
   rhino::RhinoScene read = rhino::read_3dm(path);
   BrepTranslation out;
   out.scene = std::move(read.scene);
@@ -78,15 +82,15 @@ BrepTranslation read_rhino_3dm(const std::string& path, bool) {
   return out;
 }
 
-BrepTranslation read_compact_binary(const std::string& path, bool) {
+BrepTranslation read_compact_binary(const std::string& path, const SceneReadOptions&) {
   BrepTranslation read;
   read.scene = read_cnb(read_file(path), path);
   return read;
 }
 
-BrepTranslation read_any_vrml(const std::string& path, bool homogeneous) {
+BrepTranslation read_any_vrml(const std::string& path, const SceneReadOptions& options) {
   BrepTranslation read;
-  read.scene = read_vrml(path, homogeneous);
+  read.scene = read_vrml(path, options.homogeneous_control_points);
   return read;
 }
 
@@ -140,7 +144,7 @@ void write_as_glb(const std::string& path, const Scene& scene, const SceneWriteO
 }
 
 // Draco's own mesh file: all faces as one mesh in world coordinates, welded, positions on the coarsest
-// grid that moves no vertex by more than the budget and collapses no triangle (analysis/mesh_encoding's
+// grid that moves no vertex by more than the budget and collapses no triangle (report/smallest_compressed_mesh's
 // rule, Draco's quantisation replayed exactly).
 void write_as_drc(const std::string& path, const Scene& scene, const SceneWriteOptions& options) {
   const TriangleMesh mesh = weld_exact(flatten_meshes(scene, path));
@@ -164,7 +168,7 @@ void write_as_vrml(const std::string& path, const Scene& scene, const SceneWrite
   vrml.title = options.title;
   vrml.gzipped = gzipped;
   vrml.display_deviation = options.display_deviation;
-  vrml.tessellation_hints = &tessellation_hints;
+  vrml.tessellation_hints = &plan_tessellation_hints;
   write_vrml(path, scene, vrml);
   if (encoding == VrmlEncoding::vrml97 && !options.self_contained) write_nurbs_protos_beside(path, vrml.protos_url);
 }
@@ -259,14 +263,14 @@ const FileFormat& output_format(const std::string& path) {
   return *format;
 }
 
-BrepTranslation load_scene(const std::string& path, bool homogeneous_control_points) {
+BrepTranslation load_scene(const std::string& path, const SceneReadOptions& options) {
   regular_file_size(path);  // a directory, device or FIFO is refused by type, whatever reads the format
-  return load_scene_as(path, input_format(path), homogeneous_control_points);
+  return load_scene_as(path, input_format(path), options);
 }
 
-BrepTranslation load_scene_as(const std::string& path, const FileFormat& format, bool homogeneous_control_points) {
+BrepTranslation load_scene_as(const std::string& path, const FileFormat& format, const SceneReadOptions& options) {
   regular_file_size(path);
-  BrepTranslation loaded = format.read(path, homogeneous_control_points);
+  BrepTranslation loaded = format.read(path, options);
   // The one check of trimming loops before any writer or tessellation. STEP/IGES faces (face_count > 0)
   // passed it already, face by face, where a refused face can still be meshed by OCCT.
   if (loaded.face_count == 0) {
@@ -279,9 +283,7 @@ BrepTranslation load_scene_as(const std::string& path, const FileFormat& format,
   return loaded;
 }
 
-Scene read_scene(const std::string& path, bool homogeneous_control_points) {
-  return load_scene(path, homogeneous_control_points).scene;
-}
+Scene read_scene(const std::string& path, const SceneReadOptions& options) { return load_scene(path, options).scene; }
 
 void write_scene(const std::string& path, const Scene& scene, const SceneWriteOptions& options) {
   output_format(path).write(path, scene, options);

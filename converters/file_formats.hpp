@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "converters/walled_read.hpp"
 #include "core/scene.hpp"
 #include "formats/brep/brep_translation.hpp"
 #include "formats/vrml/vrml_write_options.hpp"
@@ -17,7 +18,7 @@ struct SceneWriteOptions {
   bool self_contained = false;  // VRML97: paste the NURBS PROTOs instead of EXTERNPROTO
   bool pretty = false;          // VRML/X3D: indent nodes, one field per line
   // VRML/X3D NURBS: > 0 writes tessellation counts with which uniform-grid viewers draw every face
-  // within about this deviation (analysis/tessellation_hints), in the scene's units.
+  // within about this deviation (analysis/tessellation/plan_tessellation_hints), in the scene's units.
   double display_deviation = 0.0;
   std::optional<Viewpoint> viewpoint;
   std::string title;
@@ -25,6 +26,12 @@ struct SceneWriteOptions {
   // writer takes the coarsest quantisation within it. 0: the writer's default resolution.
   double quantisation_budget = 0.0;
   std::string compression = "draco";  // .glb: none, draco or meshopt (--compress)
+};
+
+// How a file is read; each reader uses the fields that concern it.
+struct SceneReadOptions {
+  bool homogeneous_control_points = true;  // VRML/X3D: control points are w·P (false: --euclidean)
+  BrepReadOptions brep;                    // STEP/IGES: behind the wall or not, and its limits
 };
 
 struct FileFormat {
@@ -35,7 +42,7 @@ struct FileFormat {
   bool in_samples = false;              // the bundled samples (samples/, `capping`) come in it
   // null when the format is not read / not written. Readers return what they read (the B-rep
   // readers' account of fallen-back faces included); writers write atomically.
-  BrepTranslation (*read)(const std::string& path, bool homogeneous_control_points) = nullptr;
+  BrepTranslation (*read)(const std::string& path, const SceneReadOptions& options) = nullptr;
   void (*write)(const std::string& path, const Scene& scene, const SceneWriteOptions& options) = nullptr;
   bool quantises = false;  // its writer moves positions (SceneWriteOptions::quantisation_budget)
 };
@@ -73,13 +80,13 @@ std::string extension_list(bool inputs);
 
 // input_format(path).read: the scene and, from STEP/IGES, the faces that fell back to meshes. Throws
 // FileError/GeometryError with a one-line message.
-BrepTranslation load_scene(const std::string& path, bool homogeneous_control_points = true);
+BrepTranslation load_scene(const std::string& path, const SceneReadOptions& options = {});
 
 // load_scene with the format given rather than taken from the name (content_format.hpp tells it).
-BrepTranslation load_scene_as(const std::string& path, const FileFormat& format, bool homogeneous_control_points = true);
+BrepTranslation load_scene_as(const std::string& path, const FileFormat& format, const SceneReadOptions& options = {});
 
 // load_scene(...).scene.
-Scene read_scene(const std::string& path, bool homogeneous_control_points = true);
+Scene read_scene(const std::string& path, const SceneReadOptions& options = {});
 
 // output_format(path).write. Formats that hold meshes only refuse NURBS (tessellate first). For a VRML97
 // file that is not self-contained, also writes the PROTO library beside it when it is missing.

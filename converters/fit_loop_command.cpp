@@ -1,53 +1,66 @@
 #include <filesystem>
 #include <iostream>
 
-#include "analysis/scene_triangles.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
 #include "core/number_format.hpp"
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
 #include "converters/file_formats.hpp"
 #include "converters/scene_preparation.hpp"
-#include "converters/loop_fit_measurement.hpp"
+#include "converters/subdivision_fit_measurement.hpp"
 #include "formats/common/file_io.hpp"
-#include "formats/obj/loop_control_obj.hpp"
+#include "formats/obj/control_mesh_obj.hpp"
 
 namespace cadnurbs {
 
-namespace {
+const CommandSpec& fit_loop_command_spec() {
+  static const CommandSpec spec = {
+      "fit-loop",
+      "IN.stl -o CONTROL.obj [--surface LIMIT] [--control-vertices N] [--tolerance D] [--crease-angle DEG] "
+      "[--levels K] [--weld TOL] [--connectivity]\n"
+      "CONTROL.obj --input IN.stl [--surface LIMIT] [--levels K] [--weld TOL]",
+      "Fits a Loop subdivision surface to the triangles of IN: a control mesh by quadric decimation to N\n"
+      "vertices (default 200) with the edges sharper than the crease angle (default 30 degrees) kept and\n"
+      "tagged as creases, then control points solved by least squares so that the limit surface fits\n"
+      "IN both ways. Two more starts are fitted at as many vertices, with both sides weighted by area: a\n"
+      "plain quadric decimation tagged where it is sharp itself, and one under the smallest guard on the\n"
+      "removed vertices' distance that reaches the count; the fit kept is the one whose limit\n"
+      "surface's RMS and max to IN, each as a share of the plain decimation's, sum lowest.\n"
+      "A last fit then also fits the limit points whose nearest point of IN faces away (a surface that\n"
+      "spans a gap); it is kept when its limit surface scores lower (not with a tolerance).\n"
+      "Prints the RMS and maximum two-sided distance to IN, next to a plain quadric decimation with as\n"
+      "many vertices, and storage. Given a saved CONTROL.obj, it measures that control mesh's limit\n"
+      "surface against --input.",
+      {
+          {"output", "CONTROL.obj", "the control mesh with its tags (OBJ; docs/control_mesh_obj.md)"},
+          {"surface", "LIMIT",
+           "the limit surface (K refinements, vertices at their limit points), as a\n"
+           "mesh: .stl .obj .wrl .x3dv .ply ..."},
+          {"control-vertices", "N", "the control mesh's vertex count N (default 200)"},
+          {"tolerance", "D",
+           "(first start only) keeps more of IN's vertices where the surface stays\n"
+           "farther than D, decimates and fits again, until it is within D (N is the\n"
+           "first round's count)"},
+          {"crease-angle", "DEG", "IN's edges sharper than DEG are creases (default 30 degrees)"},
+          {"levels", "K", "refinements of the limit surface, 1 to 5 (default 3)"},
+          {"weld", "TOL",
+           "IN's vertices closer than TOL are welded first (default 1e-4 of the\n"
+           "bounding-box diagonal)"},
+          {"connectivity", "",
+           "then tries edge swaps and crease and corner tag toggles, keeps those after\n"
+           "which a local re-fit gets closer, and fits again; up to 4 such rounds, while\n"
+           "each fit gains 1 % or more (much slower; not with a tolerance)"},
+          {"input", "IN.stl", "with a saved CONTROL.obj: the mesh its limit surface is measured against"},
+      },
+      "",
+  };
+  return spec;
+}
 
-const char* kHelp =
-    "usage: cadnurbs fit-loop IN.stl -o CONTROL.obj [--surface LIMIT.(stl|obj|wrl|x3dv|ply)]\n"
-    "                         [--control-vertices N] [--tolerance D] [--crease-angle DEG] [--levels K] [--weld TOL]\n"
-    "                         [--connectivity]\n"
-    "       cadnurbs fit-loop CONTROL.obj --input IN.stl [--surface LIMIT] [--levels K]\n"
-    "Fits a Loop subdivision surface to the triangles of IN: a control mesh by quadric decimation to N\n"
-    "vertices (default 200) with the edges sharper than the crease angle (default 30 degrees) kept and\n"
-    "tagged as creases, then control points solved by least squares so that the limit surface fits\n"
-    "IN both ways. Two more starts are fitted at as many vertices, with both sides weighted by area: a\n"
-    "plain quadric decimation tagged where it is sharp itself, and one under the smallest guard on the\n"
-    "removed vertices' distance that reaches the count; the fit kept is the one whose limit\n"
-    "surface's RMS and max to IN, each as a share of the plain decimation's, sum lowest.\n"
-    "--connectivity then tries edge swaps and crease and corner tag toggles, keeps those after which\n"
-    "a local re-fit gets closer, and fits again; up to 4 such rounds, while each fit gains 1 % or more\n"
-    "(much slower; not with a tolerance).\n"
-    "A last fit then also fits the limit points whose nearest point of IN faces away (a surface that\n"
-    "spans a gap); it is kept when its limit surface scores lower (not with a tolerance).\n"
-    "--tolerance D (first start only) keeps more of IN's vertices where the surface stays farther\n"
-    "than D, decimates and fits again, until it is within D (N is the first round's count).\n"
-    "IN's vertices closer than TOL are welded first (default 1e-4 of the bounding-box diagonal).\n"
-    "-o writes the control mesh with its tags (OBJ; docs/loop_control_obj.md); --surface the limit\n"
-    "surface (K refinements, default 3, vertices at their limit points). Prints the RMS and maximum\n"
-    "two-sided distance to IN, next to a plain quadric decimation with as many vertices, and storage.\n"
-    "Given a saved CONTROL.obj, it measures that control mesh's limit surface against --input.\n";
-
-}  // namespace
-
-int run_fit_loop(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("fit-loop", args,
-                                      {"output", "surface", "control-vertices", "tolerance", "crease-angle", "levels", "input", "weld"},
-                                      {"help", "connectivity"});
+int run_fit_loop(const std::vector<std::string>& args, const CommandContext&) {
+  const Arguments a = parse_arguments(fit_loop_command_spec(), args);
   if (a.has("help")) {
-    std::cout << kHelp;
+    std::cout << command_help(fit_loop_command_spec());
     return 0;
   }
   if (a.positional.size() != 1) throw UsageError("needs one input (see --help)");
@@ -55,7 +68,7 @@ int run_fit_loop(const std::vector<std::string>& args) {
   const bool from_saved = std::filesystem::path(in).extension() == ".obj";
   if (!from_saved && !a.has("output")) throw UsageError("needs -o CONTROL.obj (see --help)");
   if (from_saved && !a.has("input")) throw UsageError("a saved control mesh needs --input IN.stl to measure against");
-  LoopFitRequest request;
+  SubdivisionFitRequest request;
   request.control_vertices = a.integer("control-vertices", request.control_vertices);
   if (request.control_vertices < 4) throw UsageError("--control-vertices must be 4 or more");
   request.tolerance = a.number("tolerance", 0);
@@ -89,14 +102,14 @@ int run_fit_loop(const std::vector<std::string>& args) {
   if (triangles.triangles.empty()) throw FileError(mesh_path + ": no triangles to fit");
   checked_mesh_diagonal(triangles, mesh_path);
   request.source = mesh_path;
-  LoopControlMesh saved;
+  SubdivisionControlMesh saved;
   if (from_saved) {
-    saved = read_loop_control_obj(in);
+    saved = read_control_mesh_obj(in);
     request.saved_control = &saved;
   }
-  const LoopFitMeasure m = measure_loop_fit(triangles, request);
+  const SubdivisionFitMeasure m = measure_subdivision_fit(triangles, request);
 
-  if (a.has("output")) write_loop_control_obj(a.value("output"), m.control);
+  if (a.has("output")) write_control_mesh_obj(a.value("output"), m.control);
   if (a.has("surface")) {
     Scene limit;
     limit.unit = scene.unit;
@@ -122,11 +135,11 @@ int run_fit_loop(const std::vector<std::string>& args) {
                                         : std::string())
               << "\n";
     if (request.tolerance <= 0) {
-      const LoopStartsReport& st = m.starts;
-      auto figures = [&](const LoopStartFit& f) {
+      const FitStartsReport& st = m.starts;
+      auto figures = [&](const StartFit& f) {
         return message_number(f.distance.rms) + " / " + message_number(f.distance.max) + " " + unit;
       };
-      const char* kept = st.kept == LoopStart::guarded ? "guarded" : st.kept == LoopStart::plain ? "plain" : "features";
+      const char* kept = st.kept == FitStart::guarded ? "guarded" : st.kept == FitStart::plain ? "plain" : "features";
       std::cout << "start kept: " << kept << " (limit surface to input, two-sided RMS / max, from the start that keeps the "
                 << "input's sharp edges " << figures(st.features) << "; fitted with both sides weighted by area, "
                 << "from the plain quadric decimation " << figures(st.plain) << "; from the quadric decimation "

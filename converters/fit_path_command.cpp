@@ -13,17 +13,25 @@
 
 namespace cadnurbs {
 
-namespace {
+// The description tells what D is: no option needs a line of its own.
+const CommandSpec& fit_path_command_spec() {
+  static const CommandSpec spec = {
+      "fit-path",
+      "IN -o OUT --deviation D",
+      "Rewrites every PositionInterpolator of a VRML97 or X3D file (classic or XML, gzip'd or not) as a\n"
+      "NurbsPositionInterpolator: a polynomial NURBS curve, knots on [0, 1] so that the fraction is the\n"
+      "curve parameter, within D (model units) of the original path at every fraction, keys and between\n"
+      "keys alike (the bound is certified on the curve as written). DEF names and ROUTEs are kept and every\n"
+      "other byte passes through. VRML97 output declares the node by EXTERNPROTO and gets the PROTO library\n"
+      "beside it; X3D output gets the NURBS component. OrientationInterpolators are left as they are. OUT\n"
+      "must be of IN's encoding (.wrl/.wrz, .x3dv/.x3dvz, .x3d/.x3dz).",
+      {{"output", "OUT", ""}, {"deviation", "D", ""}},
+      "",
+  };
+  return spec;
+}
 
-const char* kHelp =
-    "usage: cadnurbs fit-path IN -o OUT --deviation D\n"
-    "Rewrites every PositionInterpolator of a VRML97 or X3D file (classic or XML, gzip'd or not) as a\n"
-    "NurbsPositionInterpolator: a polynomial NURBS curve, knots on [0, 1] so that the fraction is the\n"
-    "curve parameter, within D (model units) of the original path at every fraction, keys and between\n"
-    "keys alike (the bound is certified on the curve as written). DEF names and ROUTEs are kept and every\n"
-    "other byte passes through. VRML97 output declares the node by EXTERNPROTO and gets the PROTO library\n"
-    "beside it; X3D output gets the NURBS component. OrientationInterpolators are left as they are. OUT\n"
-    "must be of IN's encoding (.wrl/.wrz, .x3dv/.x3dvz, .x3d/.x3dz).\n";
+namespace {
 
 const char* encoding_name(VrmlEncoding encoding) {
   switch (encoding) {
@@ -46,10 +54,10 @@ VrmlEncoding encoding_of_text(const std::string& text, const std::string& path) 
 
 }  // namespace
 
-int run_fit_path(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("fit-path", args, {"output", "deviation"}, {"help"});
+int run_fit_path(const std::vector<std::string>& args, const CommandContext&) {
+  const Arguments a = parse_arguments(fit_path_command_spec(), args);
   if (a.has("help")) {
-    std::cout << kHelp;
+    std::cout << command_help(fit_path_command_spec());
     return 0;
   }
   if (a.positional.size() != 1 || !a.has("output") || !a.has("deviation"))

@@ -1,7 +1,7 @@
 #include <iomanip>
 #include <iostream>
 
-#include "analysis/scene_area.hpp"
+#include "analysis/measure/scene_area.hpp"
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
 #include "converters/file_formats.hpp"
@@ -10,13 +10,24 @@
 
 namespace cadnurbs {
 
-namespace {
-const char* kHelp =
-    "usage: cadnurbs info IN [--euclidean] [--time-limit S] [--memory-limit MB]\n"
-    "Lists the shapes of IN: the source surface type (STEP/IGES), degrees, control points, knots,\n"
-    "trimming loops, meshes, the bounding box, the units and the area (NURBS: integrated over the\n"
-    "trimmed domain to 1e-6 of it, printed to 7 significant digits).\n";
+const CommandSpec& info_command_spec() {
+  static const CommandSpec spec = {
+      "info",
+      "IN [options]",
+      "Lists the shapes of IN: the source surface type (STEP/IGES), degrees, control points, knots,\n"
+      "trimming loops, meshes, the bounding box, the units and the area (NURBS: integrated over the\n"
+      "trimmed domain to 1e-6 of it, printed to 7 significant digits).",
+      with_read_limits({
+          {"euclidean", "",
+           "VRML/X3D: read control points as Euclidean points with separate weights\n"
+           "(default: homogeneous w*P, as convert writes them)"},
+      }),
+      "",
+  };
+  return spec;
+}
 
+namespace {
 // Each trimmed NURBS area to 1e-6 of itself, printed to the 7 significant digits that supports: at
 // 1e-9 the doublings of trimmed_surface_area took minutes on a Rhino teapot whose faces convert reads
 // in seconds, for digits nobody reads.
@@ -28,15 +39,14 @@ std::string degrees(const NurbsSurface& s) {
 }
 }  // namespace
 
-int run_info(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("info", args, {"time-limit", "memory-limit"}, {"euclidean", "help"});
+int run_info(const std::vector<std::string>& args, const CommandContext& context) {
+  const Arguments a = parse_arguments(info_command_spec(), args);
   if (a.has("help")) {
-    std::cout << kHelp << kReadLimitHelp;
+    std::cout << command_help(info_command_spec());
     return 0;
   }
   if (a.positional.size() != 1) throw UsageError("needs one input file (see --help)");
-  apply_read_limits(a);
-  const Scene scene = read_scene(a.positional[0], !a.has("euclidean"));
+  const Scene scene = read_scene(a.positional[0], scene_read_options(a, context));
   checked_diagonal(scene, a.positional[0]);  // areas and the box are computed from coordinates it allows
   std::cout << a.positional[0] << "\n";
   double total_area = 0;

@@ -2,10 +2,10 @@
 #include <filesystem>
 #include <iostream>
 
-#include "analysis/crease_normals.hpp"
-#include "analysis/orient_faces.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/weld_vertices.hpp"
+#include "analysis/normals/crease_normals.hpp"
+#include "analysis/normals/orient_faces.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/mesh/weld_vertices.hpp"
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
 #include "converters/file_formats.hpp"
@@ -15,25 +15,33 @@
 
 namespace cadnurbs {
 
-namespace {
+// The description tells what TOL and DEG do: no option needs a line of its own.
+const CommandSpec& normals_command_spec() {
+  static const CommandSpec spec = {
+      "normals",
+      "IN.stl -o OUT [--crease-angle DEG] [--weld TOL]",
+      "Welds the triangles of IN (vertices closer than TOL become one; default 1e-6 of the bounding-box\n"
+      "diagonal), drops collapsed and duplicate triangles, orients the faces consistently (closed parts\n"
+      "outward) and gives every corner a normal: faces joined by an edge whose dihedral angle is below the\n"
+      "crease angle (default 30 degrees) share one normal (angle-weighted), faces across a sharper edge do\n"
+      "not (VRML's creaseAngle). OUT: .wrl .x3dv .x3d (an IndexedFaceSet with normal and normalIndex),\n"
+      ".ply .obj (vertices split where normals differ).",
+      {{"output", "OUT", ""}, {"crease-angle", "DEG", ""}, {"weld", "TOL", ""}},
+      "",
+  };
+  return spec;
+}
 
-const char* kHelp =
-    "usage: cadnurbs normals IN.stl -o OUT [--crease-angle DEG] [--weld TOL]\n"
-    "Welds the triangles of IN (vertices closer than TOL become one; default 1e-6 of the bounding-box\n"
-    "diagonal), drops collapsed and duplicate triangles, orients the faces consistently (closed parts\n"
-    "outward) and gives every corner a normal: faces joined by an edge whose dihedral angle is below the\n"
-    "crease angle (default 30 degrees) share one normal (angle-weighted), faces across a sharper edge do\n"
-    "not (VRML's creaseAngle). OUT: .wrl .x3dv .x3d (an IndexedFaceSet with normal and normalIndex),\n"
-    ".ply .obj (vertices split where normals differ).\n";
+namespace {
 
 constexpr double kDefaultCreaseDegrees = 30.0;
 
 }  // namespace
 
-int run_normals(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("normals", args, {"output", "crease-angle", "weld"}, {"help"});
+int run_normals(const std::vector<std::string>& args, const CommandContext&) {
+  const Arguments a = parse_arguments(normals_command_spec(), args);
   if (a.has("help")) {
-    std::cout << kHelp;
+    std::cout << command_help(normals_command_spec());
     return 0;
   }
   if (a.positional.size() != 1 || !a.has("output")) throw UsageError("needs one input and -o OUT (see --help)");

@@ -9,18 +9,19 @@
 #include <set>
 #include <unistd.h>
 
-#include "analysis/measure_deviation.hpp"
-#include "analysis/mesh_distance.hpp"
-#include "analysis/mesh_encoding.hpp"
-#include "analysis/nurss/nurss_figures.hpp"
-#include "analysis/nurss/nurss_text.hpp"
-#include "analysis/paired_scene_deviation.hpp"
-#include "analysis/report/report_formats.hpp"
-#include "analysis/report/storage_crossover.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/measure/measure_deviation.hpp"
+#include "analysis/measure/mesh_distance.hpp"
+#include "report/smallest_compressed_mesh.hpp"
+#include "report/nurss_figures.hpp"
+#include "formats/nurss/nurss_text.hpp"
+#include "analysis/measure/paired_scene_deviation.hpp"
+#include "report/report_formats.hpp"
+#include "report/storage_crossover.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "converters/file_formats.hpp"
-#include "converters/loop_fit_measurement.hpp"
+#include "converters/subdivision_fit_measurement.hpp"
+#include "converters/conversion.hpp"
 #include "converters/scene_preparation.hpp"
 #include "core/bounding_box.hpp"
 #include "core/geometry_error.hpp"
@@ -31,7 +32,7 @@
 #include "formats/common/gzip.hpp"
 #include "formats/draco/draco_mesh_codec.hpp"
 #include "formats/meshopt/meshopt_mesh_codec.hpp"
-#include "formats/obj/loop_control_obj.hpp"
+#include "formats/obj/control_mesh_obj.hpp"
 
 namespace cadnurbs {
 
@@ -65,7 +66,7 @@ constexpr MeshFile kMeshFiles[] = {
     {"stl-mesh", "binary STL at D", ".stl", "binary STL of the input"},
 };
 
-// The compressed meshes: the smallest encoding within D (analysis/mesh_encoding), written as the codec's
+// The compressed meshes: the smallest encoding within D (report/smallest_compressed_mesh), written as the codec's
 // own file.
 struct EncodedMeshFile {
   MeshCodec codec;
@@ -106,6 +107,17 @@ class Folder {
   bool keep_;
   fs::path path_;
 };
+
+// What convert writes `path` with for this part (the report measures convert's files): its options for
+// the part's input and `scene` (the part as read), with `deviation` as --deviation (0: not given).
+SceneWriteOptions convert_options(const PartRecord& record, const Scene& scene, const fs::path& path,
+                                  double deviation = 0) {
+  ConversionRequest request;
+  request.input = record.input;
+  request.output = path.string();
+  request.deviation = deviation;
+  return scene_write_options(request, scene, record.diagonal);
+}
 
 // Runs `write_and_measure` for the representation `label` written at `path`. A format that cannot hold
 // this part (VRML97 has no PROTO for a NurbsCurve node yet) costs that representation, not the record:
@@ -164,12 +176,10 @@ RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, c
 }
 
 // Our binary NURBS (.cnb) of the compact form within D, read back; the deviation is measured by sampling
-// both scenes at the same parameters (analysis/paired_scene_deviation).
+// both scenes at the same parameters (analysis/measure/paired_scene_deviation).
 void add_compact_binary(PartRecord& record, const Scene& compact, const Folder& folder, const std::string& stem) {
   const fs::path path = folder.file(stem + "-compact", ".cnb");
-  CnbOptions options;
-  options.max_deviation = record.deviation;
-  write_file_atomically(path.string(), write_cnb(compact, options));
+  write_scene(path.string(), compact, convert_options(record, compact, path, record.deviation));
   RepresentationFigures f{"cnb", "cadnurbs binary NURBS (.cnb) within D", RepresentationKind::nurbs, 0, 0, 0, 0, 0, ""};
   const Scene decoded = read_cnb(measure_bytes(path, f), path.string());
   const NurbsStorage storage = nurbs_storage(decoded);
@@ -201,7 +211,8 @@ void add_nurss(PartRecord& record, const Scene& scene, const Folder& folder, con
   limit.unit = scene.unit;
   limit.root.name = stem + "-nurss-limit";
   limit.root.shapes.push_back({"limit", figures->limit_mesh, std::nullopt});
-  write_scene(folder.file(stem + "-nurss-limit", ".wrl").string(), limit, SceneWriteOptions{});
+  const fs::path limit_path = folder.file(stem + "-nurss-limit", ".wrl");
+  write_scene(limit_path.string(), limit, convert_options(record, scene, limit_path));
   if (!figures->within_max_deviation || f.deviation > record.deviation)
     record.warnings.push_back("NURSS limit mesh: " + report_number(f.deviation) + " from the NURBS after " +
                               std::to_string(figures->levels) + " levels (" + f.deviation_basis + ")");
@@ -243,7 +254,6 @@ void add_encoded_meshes(PartRecord& record, const Scene& faces, const Folder& fo
 // the .cnb at that D (the curves are interpolated log-log between measured points).
 void add_curve(PartRecord& record, const BrepTranslation& loaded, const Scene& scene, const Scene& compact,
                const Folder& folder, const std::string& stem) {
-  SceneWriteOptions write_options;
   for (double fraction : kCurveFractions) {
     const double d = fraction * record.diagonal;
     const CertifiedMesh meshed = certified_mesh(loaded, scene, d);
@@ -253,7 +263,7 @@ void add_curve(PartRecord& record, const BrepTranslation& loaded, const Scene& s
       break;
     }
     const fs::path path = folder.file(stem + "-curve", ".wrl");
-    write_scene(path.string(), meshed.meshes, write_options);
+    write_scene(path.string(), meshed.meshes, convert_options(record, scene, path, d));
     RepresentationFigures f;
     measure_bytes(path, f);
     const MeshStorage storage = mesh_storage(read_back_mesh(path));
@@ -287,7 +297,7 @@ void add_curve(PartRecord& record, const BrepTranslation& loaded, const Scene& s
 }
 
 // A part given as a mesh (STL): what users have (the mesh as written, indexed and as STL, read back and
-// compared with the input) against the Loop subdivision surface fitted within D (analysis/loop_fit):
+// compared with the input) against the Loop subdivision surface fitted within D (analysis/subdivision_fit):
 // its control mesh with tags as OBJ, read back; the deviation is the limit surface's, two-sided, against
 // the input; the limit mesh is written as an IndexedFaceSet to look at.
 void measure_mesh_input(PartRecord& record, const Scene& scene, const Folder& folder, const std::string& stem,
@@ -295,11 +305,9 @@ void measure_mesh_input(PartRecord& record, const Scene& scene, const Folder& fo
   const TriangleMesh input = scene_triangles(scene);
   if (input.triangles.empty()) throw std::invalid_argument("no NURBS surfaces and no triangles to measure");
   record.mesh = mesh_storage(weld_exact(input));
-  SceneWriteOptions write_options;
-  write_options.title = stem;
   for (const auto& file : kMeshFiles) {
     const fs::path path = folder.file(stem + "-mesh", file.extension);
-    write_scene(path.string(), scene, write_options);
+    write_scene(path.string(), scene, convert_options(record, scene, path));
     RepresentationFigures f{file.key, file.input_label, RepresentationKind::mesh, 0, 0, 0, 0, 0, ""};
     measure_bytes(path, f);
     const Scene read_back = read_scene(path.string());
@@ -309,16 +317,16 @@ void measure_mesh_input(PartRecord& record, const Scene& scene, const Folder& fo
     record.representations.push_back(f);
   }
 
-  LoopFitRequest request;
+  SubdivisionFitRequest request;
   request.tolerance = record.deviation;
   request.source = record.input;
   request.control_vertices = std::max(4, std::min(request.control_vertices, static_cast<int>(record.mesh.vertices) / 2));
-  const LoopFitMeasure fit = measure_loop_fit(input, request);
+  const SubdivisionFitMeasure fit = measure_subdivision_fit(input, request);
   const fs::path path = folder.file(stem + "-loop-control", ".obj");
-  write_loop_control_obj(path.string(), fit.control);
+  write_control_mesh_obj(path.string(), fit.control);
   RepresentationFigures f{"loop", "Loop subdivision control mesh with crease tags (.obj)", RepresentationKind::loop,
                           0, 0, 0, 0, 0, ""};
-  const LoopControlMesh read_back = parse_loop_control_obj(measure_bytes(path, f), path.string());
+  const SubdivisionControlMesh read_back = parse_control_mesh_obj(measure_bytes(path, f), path.string());
   f.floats = 3L * static_cast<long>(read_back.positions.size());
   f.integers = 3L * static_cast<long>(read_back.triangles.size()) + 2L * static_cast<long>(read_back.crease_edges.size()) +
                static_cast<long>(read_back.corner_vertices.size());
@@ -333,10 +341,11 @@ void measure_mesh_input(PartRecord& record, const Scene& scene, const Folder& fo
   limit.unit = scene.unit;
   limit.root.name = stem + "-loop-limit";
   limit.root.shapes.push_back({"limit", fit.limit, std::nullopt});
-  write_scene(folder.file(stem + "-loop-limit", ".wrl").string(), limit, SceneWriteOptions{});
+  const fs::path limit_path = folder.file(stem + "-loop-limit", ".wrl");
+  write_scene(limit_path.string(), limit, convert_options(record, scene, limit_path));
   if (views) {
     const fs::path mesh_view = folder.file(stem + "-mesh", ".x3dv");
-    write_scene(mesh_view.string(), scene, write_options);
+    write_scene(mesh_view.string(), scene, convert_options(record, scene, mesh_view));
     views->mesh_x3dv = read_file(mesh_view.string());
   }
 }
@@ -356,9 +365,7 @@ void add_simplified(PartRecord& record, const Scene& scene, double tolerance, do
     if (simplified.certified_deviation > simplify)
       throw GeometryError("simplify", "the certified deviation " + message_number(simplified.certified_deviation) +
                                           " exceeds " + message_number(simplify));
-    SceneWriteOptions write_options;
-    write_options.title = path.filename().string();
-    write_scene(path.string(), compact_scene(simplified.scene, tolerance), write_options);
+    write_scene(path.string(), compact_scene(simplified.scene, tolerance), convert_options(record, scene, path));
     measure_bytes(path, f);
     read_back = nurbs_storage(read_scene(path.string()));
   });
@@ -374,7 +381,8 @@ void add_simplified(PartRecord& record, const Scene& scene, double tolerance, do
 PartRecord measure(const std::string& input, const PartMeasurementOptions& options, PartViews* views) {
   PartRecord record;
   record.input = input;
-  const BrepTranslation loaded = options.format ? load_scene_as(input, *options.format) : load_scene(input);
+  const BrepTranslation loaded =
+      options.format ? load_scene_as(input, *options.format, options.read) : load_scene(input, options.read);
   for (const auto& line : loaded.repairs) record.warnings.push_back(line);
   for (const auto& f : loaded.fallbacks)
     record.warnings.push_back(f.node + " face " + std::to_string(f.face_index) + " (" + f.surface_type +
@@ -396,14 +404,12 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
 
   const Folder folder(options.files_folder);
   const std::string stem = fs::path(input).stem().string();
-  SceneWriteOptions write_options;
-  write_options.title = fs::path(input).filename().string();
   for (const auto& file : kNurbsFiles) {
     const fs::path path = folder.file(stem + (file.compact ? "-compact" : "-exact"), file.extension);
     RepresentationFigures f{file.key, file.label, RepresentationKind::nurbs, 0, 0, 0, 0, 0, ""};
     NurbsStorage read_back;
     const bool written = measured_or_noted(record, file.label, path, [&] {
-      write_scene(path.string(), file.compact ? compact : scene, write_options);
+      write_scene(path.string(), file.compact ? compact : scene, convert_options(record, scene, path));
       measure_bytes(path, f);
       read_back = nurbs_storage(read_scene(path.string()));
     });
@@ -429,7 +435,7 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
     const fs::path path = folder.file(stem + "-mesh", file.extension);
     TriangleMesh as_read;
     const bool written = measured_or_noted(record, file.label, path, [&] {
-      write_scene(path.string(), meshed.meshes, write_options);
+      write_scene(path.string(), meshed.meshes, convert_options(record, scene, path, record.deviation));
       record.representations.push_back(mesh_figures(file, path, scene, as_read));
     });
     // The indexed figures: the first file's mesh (the IndexedFaceSet) with its shared vertices welded.
@@ -440,7 +446,7 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
     const fs::path nurbs_view = folder.file(stem + "-compact", ".x3dv");
     if (fs::exists(nurbs_view)) views->nurbs_x3dv = read_file(nurbs_view.string());
     const fs::path mesh_view = folder.file(stem + "-mesh", ".x3dv");
-    write_scene(mesh_view.string(), meshed.meshes, write_options);
+    write_scene(mesh_view.string(), meshed.meshes, convert_options(record, scene, mesh_view, record.deviation));
     views->mesh_x3dv = read_file(mesh_view.string());
   }
   if (options.curve) add_curve(record, loaded, scene, compact, folder, stem);

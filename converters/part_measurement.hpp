@@ -1,11 +1,11 @@
 #pragma once
 // The report's pipeline for one part: read it, write every representation the report compares into a
-// folder, read each file back, and measure it (analysis/report/storage_record.hpp). Every byte count is a
+// folder, read each file back, and measure it (report/storage_record.hpp). Every byte count is a
 // file's size on disk; every mesh deviation is measured on what reading the file back gives.
 #include <string>
 
-#include "analysis/report/report_html.hpp"
-#include "analysis/report/storage_record.hpp"
+#include "report/html/report_html.hpp"
+#include "report/storage_record.hpp"
 #include "converters/file_formats.hpp"
 
 namespace cadnurbs {
@@ -20,6 +20,7 @@ struct PartMeasurementOptions {
   // next to the source NURBS, its deviation certified by simplified_scene (converters/scene_preparation).
   double simplify_mm = 0;
   const FileFormat* format = nullptr;  // the input's format when its name does not say it (batch tells it by content)
+  SceneReadOptions read;               // how the input is read (the STEP/IGES wall and its limits)
 };
 
 // The record of `input`. Never throws for a bad input: a file that cannot be read or measured gives a

@@ -4,7 +4,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "analysis/fit_position_path.hpp"
+#include "analysis/fitting/fit_position_path.hpp"
 #include "core/geometry_error.hpp"
 #include "formats/vrml/interpolators_in_text.hpp"
 #include "formats/vrml/nurbs_interpolator_text.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // fit-path's work on one VRML97 / X3D text: every PositionInterpolator that can be rewritten becomes a
-// NurbsPositionInterpolator fitted within a deviation (analysis/fit_position_path), written in place of
+// NurbsPositionInterpolator fitted within a deviation (analysis/fitting/fit_position_path), written in place of
 // the old node (formats/vrml/nurbs_interpolator_text); every other byte of the text stays as it was.
 // DEF names are kept, so ROUTEs to set_fraction and from value_changed still connect.
 //

@@ -3,7 +3,7 @@
 #include <iostream>
 #include <map>
 
-#include "analysis/report/report_formats.hpp"
+#include "report/report_formats.hpp"
 #include "converters/arguments.hpp"
 #include "converters/commands.hpp"
 #include "converters/part_measurement.hpp"
@@ -11,25 +11,33 @@
 
 namespace cadnurbs {
 
-namespace {
+const CommandSpec& report_command_spec() {
+  static const CommandSpec spec = {
+      "report",
+      "IN... [options]",
+      "For each part: what NURBS and meshes cost at the same accuracy, in floats (counted as seed 001,\n"
+      "6.1 counts them) and in bytes of files actually written and read back (raw and gzip'd), with the\n"
+      "deviation of every mesh measured after reading it back.",
+      with_read_limits({
+          {"deviation", "D", "the maximum deviation D of every mesh, in millimetres (default 1)"},
+          {"format", "F",
+           "md (default), json, csv or html (one self-contained page: charts and the\n"
+           "part drawn as NURBS and as mesh); by default the extension of -o decides"},
+          {"output", "FILE", "write the report there (default: standard output)"},
+          {"files", "DIR", "keep the written representations in DIR (default: a temporary folder)"},
+          {"records", "DIR", "also one JSON record per part in DIR (NAME.json)"},
+          {"curve", "", "also bytes against D, from 1 % of the part's diagonal down to 1e-5 of it"},
+          {"simplify", "S",
+           "also the compact X3D NURBS with the knots removed that no face needs\n"
+           "within S millimetres (convert --simplify), next to the source NURBS"},
+      }),
+      "Goes on past a file that fails and lists it with its reason; the exit status is 0 when every\n"
+      "part was measured, 3 when some failed.",
+  };
+  return spec;
+}
 
-const char* kHelp =
-    "usage: cadnurbs report IN... [--deviation D] [--format md|json|csv|html] [-o FILE] [--files DIR]\n"
-    "                       [--records DIR] [--curve] [--simplify S] [--time-limit S] [--memory-limit MB]\n"
-    "For each part: what NURBS and meshes cost at the same accuracy, in floats (counted as seed 001,\n"
-    "6.1 counts them) and in bytes of files actually written and read back (raw and gzip'd), with the\n"
-    "deviation of every mesh measured after reading it back.\n"
-    "  --deviation D   the maximum deviation D of every mesh, in millimetres (default 1)\n"
-    "  --format F      md (default), json, csv or html (one self-contained page: charts and the part\n"
-    "                  drawn as NURBS and as mesh); by default the extension of -o decides\n"
-    "  -o FILE         write the report there (default: standard output)\n"
-    "  --files DIR     keep the written representations in DIR (default: a temporary folder)\n"
-    "  --records DIR   also one JSON record per part in DIR (NAME.json)\n"
-    "  --curve         also bytes against D, from 1 % of the part's diagonal down to 1e-5 of it\n"
-    "  --simplify S    also the compact X3D NURBS with the knots removed that no face needs within S\n"
-    "                  millimetres (convert --simplify), next to the source NURBS\n"
-    "Goes on past a file that fails and lists it with its reason; the exit status is 0 when every\n"
-    "part was measured, 3 when some failed.\n";
+namespace {
 
 struct Layout {
   std::string (*write)(const std::vector<PartRecord>&, const std::vector<PartViews>&);
@@ -59,20 +67,19 @@ constexpr int kSomeFailed = 3;
 
 }  // namespace
 
-int run_report(const std::vector<std::string>& args) {
-  const Arguments a = parse_arguments("report", args, {"output", "deviation", "format", "files", "records", "simplify", "time-limit",
-                                       "memory-limit"},
-                                      {"curve", "help"});
+int run_report(const std::vector<std::string>& args, const CommandContext& context) {
+  const Arguments a = parse_arguments(report_command_spec(), args);
   if (a.has("help")) {
-    std::cout << kHelp << kReadLimitHelp;
+    std::cout << command_help(report_command_spec());
     return 0;
   }
-  apply_read_limits(a);
+  const SceneReadOptions read = scene_read_options(a, context);
   if (a.positional.empty()) throw UsageError("needs at least one input (see --help)");
   const std::string layout = layout_name(a);
   if (!layouts().count(layout)) throw UsageError("--format: unknown format '" + layout + "' (md, json, csv, html)");
   const Layout& chosen = layouts().at(layout);
   PartMeasurementOptions options;
+  options.read = read;
   options.deviation_mm = a.number("deviation", 1.0);
   if (!(options.deviation_mm > 0) || !std::isfinite(options.deviation_mm))
     throw UsageError("--deviation must be a positive number of millimetres");

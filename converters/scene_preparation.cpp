@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
-#include "analysis/measure_deviation.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/measure/measure_deviation.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "core/bounding_box.hpp"
+#include "core/number_format.hpp"
 #include "formats/common/file_io.hpp"
 
 namespace cadnurbs {
@@ -29,10 +29,8 @@ double checked_box_diagonal(const Eigen::AlignedBox3d& box, const std::string& i
     throw FileError(in + ": a coordinate is not finite once placed (a transform overflows)");
   const double largest = std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
   if (largest > kLargestCoordinate) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.3g", largest);
-    throw FileError(in + ": the part's size is not finite in double precision (coordinates up to " + text +
-                    "; squared lengths overflow beyond 1e+150): scale it down");
+    throw FileError(in + ": the part's size is not finite in double precision (coordinates up to " +
+                    number_text(largest, 3) + "; squared lengths overflow beyond 1e+150): scale it down");
   }
   return box.diagonal().norm();
 }

@@ -2,11 +2,11 @@
 // How a read scene is made ready for a writer, shared by convert and report so that the report measures
 // exactly what convert writes: the compact NURBS form, and the certified mesh (sewn first when the file
 // named no edges).
-#include "analysis/compact_scene.hpp"
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/sew_faces.hpp"
-#include "analysis/simplify_scene.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/compaction/compact_scene.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/sewing/sew_faces.hpp"
+#include "analysis/knots/simplify_scene.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "formats/brep/brep_translation.hpp"
 
 namespace cadnurbs {

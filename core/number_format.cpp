@@ -1,8 +1,9 @@
 #include "core/number_format.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <sstream>
+#include <cstdio>
 #include <stdexcept>
 #include <system_error>
 
@@ -114,11 +115,17 @@ std::string format_number(double value, const NumberPrecision& precision) {
   return out;
 }
 
-std::string message_number(double value) {
-  std::ostringstream out;
-  out.precision(3);
-  out << value;
-  return out.str();
+std::string number_text(double value, int significant_digits) {
+  significant_digits = std::max(significant_digits, 1);
+  char text[64];
+  const int length = std::snprintf(text, sizeof text, "%.*g", significant_digits, value);
+  if (length < static_cast<int>(sizeof text)) return std::string(text, static_cast<size_t>(length));
+  // Only a number given more digits than fit needs more room (1e80 with 100 digits).
+  std::string longer(static_cast<size_t>(length), '\0');
+  std::snprintf(longer.data(), longer.size() + 1, "%.*g", significant_digits, value);
+  return longer;
 }
+
+std::string message_number(double value) { return number_text(value, 3); }
 
 }  // namespace cadnurbs

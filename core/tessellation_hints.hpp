@@ -1,7 +1,8 @@
 #pragma once
 // What a face tells viewers that tessellate NURBS on a uniform grid (X3D/VRML uTessellation,
 // vTessellation, NurbsCurve2D tessellation): counts, 0 where the viewer's default will do.
-// analysis/tessellation_hints computes them for a deviation; the VRML/X3D writers write them.
+// analysis/tessellation/plan_tessellation_hints computes them for a deviation; the VRML/X3D writers
+// write them.
 #include <vector>
 
 namespace cadnurbs {

@@ -4,7 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "analysis/triangulate_polygon.hpp"
+#include "analysis/mesh/triangulate_polygon.hpp"
 #include "core/geometry_error.hpp"
 
 namespace cadnurbs {

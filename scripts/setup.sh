@@ -49,12 +49,12 @@ if [ -f "$rhino3dm_dir/package-lock.json" ]; then
 fi
 
 # What the HTML report inlines (Chart.js, X_ITE), pinned by package-lock.json and embedded into the
-# library at build time (analysis/report/html/CMakeLists.txt).
-report_dir="$here/analysis/report/html"
+# library at build time (report/html/CMakeLists.txt).
+report_dir="$here/report/html"
 if [ -f "$report_dir/package-lock.json" ]; then
   if [ ! -d "$report_dir/node_modules/chart.js" ] || [ ! -d "$report_dir/node_modules/x_ite" ] \
      || [ "$report_dir/package-lock.json" -nt "$report_dir/node_modules/.package-lock.json" ]; then
-    echo "setup: npm ci in analysis/report/html"
+    echo "setup: npm ci in report/html"
     (cd "$report_dir" && npm ci --no-audit --no-fund --loglevel=error)
   else
     echo "setup: report npm packages present"

@@ -16,7 +16,7 @@
 // intervals d + δ, δ → 0: c_k = d(P_{k-1} → P_k) + d(P_{k+1} → P_k); if that too is 0 everywhere, c_k = 1.
 #include <vector>
 
-#include "analysis/nurss/nurss_mesh.hpp"
+#include "core/nurss_mesh.hpp"
 
 namespace cadnurbs {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <map>
 
-#include "analysis/point_hash_grid.hpp"
+#include "analysis/mesh/point_hash_grid.hpp"
 #include "core/geometry_error.hpp"
 
 namespace cadnurbs {

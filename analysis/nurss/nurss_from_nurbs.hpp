@@ -11,7 +11,7 @@
 // Rational nets are taken as they are: the NURSS vertices keep the weights (nurss_mesh.hpp).
 #include <vector>
 
-#include "analysis/nurss/nurss_mesh.hpp"
+#include "core/nurss_mesh.hpp"
 #include "core/nurbs_surface.hpp"
 
 namespace cadnurbs {

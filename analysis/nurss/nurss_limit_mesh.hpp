@@ -14,7 +14,7 @@
 // manifold mesh.
 #include <vector>
 
-#include "analysis/nurss/nurss_mesh.hpp"
+#include "core/nurss_mesh.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace cadnurbs {

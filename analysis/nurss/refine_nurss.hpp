@@ -24,7 +24,7 @@
 // f = the F-face of old face f (same corner order), then the E-faces in edge order, then the V-faces in
 // vertex order. Labels: an F-face keeps its face's label, an E-face or V-face takes the largest label of
 // the old faces around it.
-#include "analysis/nurss/nurss_mesh.hpp"
+#include "core/nurss_mesh.hpp"
 
 namespace cadnurbs {
 

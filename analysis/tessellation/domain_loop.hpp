@@ -3,7 +3,7 @@
 // curve in 3D (the seam of a closed direction), so that the seam is sampled once and the mesh closes there.
 #include <Eigen/Core>
 
-#include "analysis/surface_evaluator.hpp"
+#include "analysis/eval/surface_evaluator.hpp"
 #include "core/trimmed_surface.hpp"
 
 namespace cadnurbs::tessellation {

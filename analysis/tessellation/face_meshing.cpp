@@ -9,8 +9,8 @@
 #include <unordered_set>
 #include <vector>
 
-#include "analysis/domain_triangulation.hpp"
-#include "analysis/sample_trim_segment.hpp"
+#include "analysis/tessellation/domain_triangulation.hpp"
+#include "analysis/eval/sample_trim_segment.hpp"
 #include "analysis/tessellation/segment_meets_box.hpp"
 #include "analysis/tessellation/surface_normal.hpp"
 #include "analysis/tessellation/triangle_certification.hpp"

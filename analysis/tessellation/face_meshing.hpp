@@ -18,7 +18,7 @@
 // Throws GeometryError (the face's name) for a loop of fewer than 3 distinct points, a loop that bounds
 // no area, or one that leaves the surface's domain by more than 1e-2 of it (points less far out are
 // moved onto the domain's edge, where the surface is clamped anyway).
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "analysis/tessellation/tessellation_face.hpp"
 
 namespace cadnurbs::tessellation {

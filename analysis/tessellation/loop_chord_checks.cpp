@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "analysis/sample_trim_segment.hpp"
+#include "analysis/eval/sample_trim_segment.hpp"
 
 namespace cadnurbs::tessellation {
 

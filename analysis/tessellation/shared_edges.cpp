@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "analysis/sample_trim_segment.hpp"
+#include "analysis/eval/sample_trim_segment.hpp"
 #include "analysis/tessellation/domain_loop.hpp"
 #include "analysis/tessellation/shared_sample_inversion.hpp"
 #include "core/trim_segment_parameters.hpp"

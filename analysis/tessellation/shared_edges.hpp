@@ -18,7 +18,7 @@
 // TessellationReport::unshared_edge_uses (the mesh may have a crack there).
 #include <vector>
 
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "analysis/tessellation/model_curves.hpp"
 #include "analysis/tessellation/model_nodes.hpp"
 #include "analysis/tessellation/tessellation_face.hpp"

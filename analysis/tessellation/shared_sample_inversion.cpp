@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "analysis/point_inversion.hpp"
+#include "analysis/eval/point_inversion.hpp"
 #include "core/trim_segment_parameters.hpp"
 
 namespace cadnurbs::tessellation {

@@ -3,7 +3,7 @@
 // at a pole, where it is not.
 #include <Eigen/Core>
 
-#include "analysis/surface_evaluator.hpp"
+#include "analysis/eval/surface_evaluator.hpp"
 
 namespace cadnurbs::tessellation {
 

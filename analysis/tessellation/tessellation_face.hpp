@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/surface_deviation_bound.hpp"
-#include "analysis/surface_evaluator.hpp"
+#include "analysis/eval/surface_deviation_bound.hpp"
+#include "analysis/eval/surface_evaluator.hpp"
 #include "analysis/tessellation/tessellation_ids.hpp"
 #include "core/triangle_mesh.hpp"
 #include "core/trimmed_surface.hpp"

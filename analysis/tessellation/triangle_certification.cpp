@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "analysis/point_triangle_distance.hpp"
+#include "core/point_triangle_distance.hpp"
 
 namespace cadnurbs::tessellation {
 

@@ -19,8 +19,8 @@
 #include <Eigen/Core>
 #include <optional>
 
-#include "analysis/surface_deviation_bound.hpp"
-#include "analysis/surface_evaluator.hpp"
+#include "analysis/eval/surface_deviation_bound.hpp"
+#include "analysis/eval/surface_evaluator.hpp"
 
 namespace cadnurbs::tessellation {
 

@@ -4,15 +4,27 @@
 
 #include <cstdio>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <vector>
 
-#include "analysis/report/part_record_from_json.hpp"
-#include "analysis/report/report_formats.hpp"
+#include "report/part_record_from_json.hpp"
+#include "report/record_fields.hpp"
+#include "report/report_formats.hpp"
 #include "formats/common/file_io.hpp"
 
 namespace cadnurbs {
+
+namespace {
+
+// What a batch record adds to the part record's fields: one object, "batch".
+const JsonFields<BatchFields>& batch_record_fields() {
+  static const JsonFields<BatchFields> fields{group_field<BatchFields>(
+      "batch", {value_field("part", &BatchFields::part), value_field("input_hash", &BatchFields::input_hash),
+                value_field("options", &BatchFields::options), value_field("seconds", &BatchFields::seconds)})};
+  return fields;
+}
+
+}  // namespace
 
 std::string content_hash(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -33,9 +45,8 @@ std::string content_hash(const std::string& path) {
 }
 
 std::string batch_record_json(const PartRecord& record, const BatchFields& fields) {
-  nlohmann::ordered_json j = nlohmann::ordered_json::parse(part_record_json(record));
-  j["batch"] = {{"part", fields.part}, {"input_hash", fields.input_hash}, {"options", fields.options},
-                {"seconds", fields.seconds}};
+  WrittenJson j = WrittenJson::parse(part_record_json(record));
+  write_json_fields(batch_record_fields(), fields, j);
   return j.dump(2) + "\n";
 }
 
@@ -45,14 +56,9 @@ std::optional<BatchRecord> read_batch_record(const std::string& path) {
   std::stringstream text;
   text << in.rdbuf();
   try {
-    const nlohmann::json j = nlohmann::json::parse(text.str());
-    const nlohmann::json& batch = j.at("batch");
     BatchRecord r;
+    read_json_fields(batch_record_fields(), ReadJson::parse(text.str()), r.fields);
     r.record = part_record_from_json(text.str(), path);
-    r.fields.part = batch.at("part").get<std::string>();
-    r.fields.input_hash = batch.at("input_hash").get<std::string>();
-    r.fields.options = batch.at("options").get<std::string>();
-    r.fields.seconds = batch.at("seconds").get<double>();
     return r;
   } catch (const std::exception&) {
     return std::nullopt;

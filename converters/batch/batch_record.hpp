@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "analysis/report/storage_record.hpp"
+#include "report/storage_record.hpp"
 
 namespace cadnurbs {
 

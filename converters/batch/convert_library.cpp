@@ -8,14 +8,13 @@
 #include <optional>
 #include <sstream>
 
-#include "analysis/report/library_report_html.hpp"
-#include "analysis/report/report_formats.hpp"
+#include "report/html/library_report_html.hpp"
+#include "report/report_formats.hpp"
 #include "converters/batch/batch_record.hpp"
 #include "converters/batch/library_listing.hpp"
 #include "converters/batch/worker_pool.hpp"
-#include "converters/commands.hpp"
+#include "converters/conversion.hpp"
 #include "converters/part_measurement.hpp"
-#include "converters/walled_read.hpp"
 #include "formats/common/file_io.hpp"
 
 namespace cadnurbs {
@@ -51,19 +50,24 @@ void remove_outputs(const BatchOptions& options, const fs::path& stem) {
 int run_part(const BatchOptions& options, const LibraryPart& part, const fs::path& stem) {
   const auto start = Clock::now();
   const std::string input = input_path(options, part);
+  SceneReadOptions read = options.read;
   // The STEP/IGES wall inside the worker stops a little before the worker is killed, naming the stage.
-  read_limits() = {0.9 * options.seconds, options.megabytes};
+  read.brep.limits = {0.9 * options.seconds, options.megabytes};
   PartMeasurementOptions measurement;
   measurement.deviation_mm = options.deviation_mm;
+  measurement.read = read;
   if (part.by_content) measurement.format = part.format;
   PartRecord record = measure_part(input, measurement);
   fs::create_directories(stem.parent_path());
   for (const auto& target : options.targets) {
     if (record.failed) break;
-    std::vector<std::string> args{input, "-o", stem.string() + "." + target};
-    if (part.by_content) args.insert(args.end(), {"--from", part.format->extensions.front()});
+    ConversionRequest request;  // convert's defaults, as `convert INPUT -o OUT` would write it
+    request.input = input;
+    request.output = stem.string() + "." + target;
+    request.read = read;
+    if (part.by_content) request.input_format = part.format;
     try {
-      if (run_convert(args) != 0) record = failed_record(part.relative, "convert to ." + target + " failed");
+      convert_file(request);
     } catch (const std::exception& error) {
       record = failed_record(part.relative, record_error(error.what(), input));
     }
@@ -104,6 +108,8 @@ void write_reports(const fs::path& out_dir, const std::string& name, const std::
   write_file_atomically((out_dir / (name + ".html")).string(), library_report_html(records));
 }
 
+// Tenths of a second, like the progress line's parts per minute: a fixed number of decimals, which
+// number_text's significant digits cannot give ("12.0 s", "1234.5 s").
 std::string seconds_text(double s) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f s", s);
@@ -187,7 +193,7 @@ BatchSummary convert_library(const BatchOptions& options) {
     }
     to_convert.push_back(i);
   }
-  const WorkerLimits limits{options.seconds, options.megabytes};
+  const ProcessLimits limits{options.seconds, options.megabytes};
   run_in_workers(
       static_cast<int>(to_convert.size()), options.jobs, limits,
       [&](int k) { return run_part(options, parts[to_convert[k]], stems[to_convert[k]]); },

@@ -18,6 +18,7 @@ struct BatchOptions {
   long megabytes = 4096;                     // per part: address space
   int shard = 0, shards = 1;                 // this run's slice of the library (library_listing.hpp)
   bool progress_bar = false;                 // a progress line redrawn in place (stderr is a terminal)
+  SceneReadOptions read;                     // how parts are read (the STEP/IGES wall: when the executable has one)
 };
 
 // What the options that shape a part's results come to, as records keep it: a record made with other

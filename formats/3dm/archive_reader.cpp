@@ -155,7 +155,6 @@ CADNURBS_RHINO_PRIMITIVE(u16, std::uint16_t, "uint16")
 CADNURBS_RHINO_PRIMITIVE(i32, std::int32_t, "int32")
 CADNURBS_RHINO_PRIMITIVE(u32, std::uint32_t, "uint32")
 CADNURBS_RHINO_PRIMITIVE(i64, std::int64_t, "int64")
-CADNURBS_RHINO_PRIMITIVE(f32, float, "float")
 CADNURBS_RHINO_PRIMITIVE(f64, double, "double")
 #undef CADNURBS_RHINO_PRIMITIVE
 
@@ -342,11 +341,6 @@ void ArchiveReader::end_chunk() {
 std::pair<int, int> ArchiveReader::chunk_version() {
   const std::uint8_t v = u8();
   return {v >> 4, v & 0xF};
-}
-
-const ChunkHeader& ArchiveReader::current_chunk() const {
-  if (open_.empty()) fail("no chunk is open");
-  return open_.back();
 }
 
 }  // namespace cadnurbs::rhino

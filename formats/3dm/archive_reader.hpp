@@ -68,7 +68,6 @@ class ArchiveReader {
   std::int32_t i32();
   std::uint32_t u32();
   std::int64_t i64();
-  float f32();
   double f64();
   Uuid uuid();
   Eigen::Vector2d point2();
@@ -103,8 +102,6 @@ class ArchiveReader {
   ChunkHeader peek_chunk() const;
   // The one-byte chunk version openNURBS objects write first in their data: major * 16 + minor.
   std::pair<int, int> chunk_version();
-  // The innermost open chunk (for messages); refused when none is open.
-  const ChunkHeader& current_chunk() const;
   int open_chunks() const { return static_cast<int>(open_.size()); }
 
   // Throws ArchiveError naming the innermost open chunk (typecode and header offset) and `reason`.

@@ -8,6 +8,7 @@
 #include "core/bezier_extraction.hpp"
 #include "core/geometry_error.hpp"
 #include "core/knot_insertion.hpp"
+#include "core/number_format.hpp"
 #include "formats/3dm/object_checks.hpp"
 #include "formats/3dm/rhino_object.hpp"
 
@@ -59,11 +60,12 @@ NurbsCurve read_arc_or_circle(ArchiveReader& reader, const char* class_name, boo
   // openNURBS's own rule for this field: anything but 2 means 3.
   const int dimension = reader.i32() == 2 ? 2 : 3;
   if (!(arc.radius > 0.0) || !std::isfinite(arc.radius))
-    refuse(reader, class_name, "radius " + number_text(arc.radius) + " is not positive");
+    refuse(reader, class_name, "radius " + number_text(arc.radius, 17) + " is not positive");
   const double angle = arc.angle1 - arc.angle0;
   if (!(angle > 0.0) || angle > 2.0 * std::numbers::pi + kZeroTolerance)
     refuse(reader, class_name,
-           "angle interval [" + number_text(arc.angle0) + ", " + number_text(arc.angle1) + "] is not in (0, 2 pi]");
+           "angle interval [" + number_text(arc.angle0, 17) + ", " + number_text(arc.angle1, 17) +
+               "] is not in (0, 2 pi]");
   return checked(reader, class_name, arc_as_nurbs(arc, t0, t1, dimension));
 }
 
@@ -186,8 +188,8 @@ NurbsCurve read_polyline_curve(ArchiveReader& reader) {
     refuse(reader, kClass, std::to_string(param_count) + " parameters for " + std::to_string(point_count) + " points");
   for (std::size_t i = 1; i < params.size(); ++i)
     if (!(params[i - 1] < params[i]))
-      refuse(reader, kClass, "parameter " + std::to_string(i) + " (" + number_text(params[i]) +
-                                 ") does not exceed the one before (" + number_text(params[i - 1]) + ")");
+      refuse(reader, kClass, "parameter " + std::to_string(i) + " (" + number_text(params[i], 17) +
+                                 ") does not exceed the one before (" + number_text(params[i - 1], 17) + ")");
   return checked(reader, kClass, polyline_nurbs(std::move(points), params, dimension));
 }
 
@@ -204,8 +206,8 @@ NurbsCurve read_poly_curve(ArchiveReader& reader) {
                                " segments (need one more than segments)");
   for (std::size_t i = 1; i < breaks.size(); ++i)
     if (!(breaks[i - 1] < breaks[i]))
-      refuse(reader, kClass, "segment parameter " + std::to_string(i) + " (" + number_text(breaks[i]) +
-                                 ") does not exceed the one before (" + number_text(breaks[i - 1]) + ")");
+      refuse(reader, kClass, "segment parameter " + std::to_string(i) + " (" + number_text(breaks[i], 17) +
+                                 ") does not exceed the one before (" + number_text(breaks[i - 1], 17) + ")");
   std::vector<NurbsCurve> segments;
   segments.reserve(segment_count);
   for (int i = 0; i < segment_count; ++i)

@@ -1,9 +1,9 @@
 #include "formats/3dm/object_checks.hpp"
 
-#include <cstdio>
 #include <variant>
 
 #include "core/geometry_error.hpp"
+#include "core/number_format.hpp"
 #include "formats/3dm/rhino_object.hpp"
 
 namespace cadnurbs::rhino {
@@ -84,7 +84,7 @@ void read_control_points(ArchiveReader& reader, const char* class_name, int dime
     }
     const double w = reader.f64();
     if (!(w > 0.0))
-      refuse(reader, class_name, "weight of control point " + std::to_string(i) + " is " + number_text(w) +
+      refuse(reader, class_name, "weight of control point " + std::to_string(i) + " is " + number_text(w, 17) +
                                      "; weights must be positive");
     // One reciprocal, three products: the Euclidean point openNURBS's GetCV reports, bit for bit.
     const double r = 1.0 / w;
@@ -112,7 +112,7 @@ std::pair<double, double> read_increasing_interval(ArchiveReader& reader, const 
                                                    const std::string& what) {
   const double t0 = reader.f64(), t1 = reader.f64();
   if (!(t0 < t1))
-    refuse(reader, class_name, what + " [" + number_text(t0) + ", " + number_text(t1) + "] does not increase");
+    refuse(reader, class_name, what + " [" + number_text(t0, 17) + ", " + number_text(t1, 17) + "] does not increase");
   return {t0, t1};
 }
 
@@ -135,12 +135,6 @@ std::vector<double> with_end_knots(const std::vector<double>& stored) {
   knots.insert(knots.end(), stored.begin(), stored.end());
   knots.push_back(stored.back());
   return knots;
-}
-
-std::string number_text(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
 }
 
 }  // namespace cadnurbs::rhino

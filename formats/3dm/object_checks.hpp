@@ -63,7 +63,4 @@ std::vector<double> read_knots(ArchiveReader& reader, const char* class_name, co
 // last stored knot once more. `stored` must not be empty.
 std::vector<double> with_end_knots(const std::vector<double>& stored);
 
-// A double as text that reads back to the same value ("%.17g").
-std::string number_text(double value);
-
 }  // namespace cadnurbs::rhino

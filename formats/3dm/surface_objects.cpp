@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "core/number_format.hpp"
 #include "formats/3dm/curve_objects.hpp"
 #include "formats/3dm/object_checks.hpp"
 
@@ -111,7 +112,8 @@ Revolution read_revolution(ArchiveReader& reader) {
   if (!((rev.axis_to - rev.axis_from).norm() > 0.0)) refuse(reader, kClass, "the axis has zero length");
   if (rev.angle1 - rev.angle0 > 2.0 * std::numbers::pi + kZeroTolerance)
     refuse(reader, kClass,
-           "angle interval [" + number_text(rev.angle0) + ", " + number_text(rev.angle1) + "] exceeds a full turn");
+           "angle interval [" + number_text(rev.angle0, 17) + ", " + number_text(rev.angle1, 17) +
+               "] exceeds a full turn");
   rev.profile = nested_curve(reader, kClass, "the profile");
   return rev;
 }

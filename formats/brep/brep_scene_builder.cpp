@@ -12,7 +12,6 @@
 #include "formats/brep/face_mesh.hpp"
 #include "formats/brep/face_to_trimmed_surface.hpp"
 #include "formats/brep/occt_errors.hpp"
-#include "formats/brep/read_stage.hpp"
 #include "formats/brep/rebuild_stray_pcurves.hpp"
 #include "formats/brep/surface_type_name.hpp"
 
@@ -70,7 +69,7 @@ const BrepSceneBuilder::Converted& BrepSceneBuilder::convert(const TopoDS_Face& 
 void BrepSceneBuilder::add_faces(SceneNode& node, const std::string& node_path, const std::vector<TopoDS_Face>& faces,
                                  const ShapeColours& colours) {
   for (size_t i = 0; i < faces.size(); ++i) {
-    report_read_stage("face " + std::to_string(face_count_ + 1));
+    tell_stage(stage_, "face " + std::to_string(face_count_ + 1));
     const Converted& converted = convert(faces[i]);
     const int number = static_cast<int>(i) + 1;
     Shape shape;

@@ -8,10 +8,12 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "formats/brep/brep_translation.hpp"
 #include "formats/brep/edge_numbering.hpp"
+#include "formats/brep/read_stage.hpp"
 
 namespace cadnurbs {
 
@@ -21,7 +23,9 @@ using ShapeColours = NCollection_DataMap<TopoDS_Shape, Colour, TopTools_ShapeMap
 class BrepSceneBuilder {
  public:
   // `mesh_deflection`: chordal deflection, in model units, of the meshes written for faces that fail.
-  explicit BrepSceneBuilder(double mesh_deflection) : deflection_(mesh_deflection) {}
+  // `stage` hears "face N" as face N starts.
+  BrepSceneBuilder(double mesh_deflection, ReadStageListener stage)
+      : deflection_(mesh_deflection), stage_(std::move(stage)) {}
 
   // Adds the content of `shape` to `node` (`node_path`: its name path, for reports):
   // - a shape holding exactly one solid or shell and no other face: its faces become the node's shapes;
@@ -54,6 +58,7 @@ class BrepSceneBuilder {
                  const ShapeColours& colours);
 
   double deflection_;
+  ReadStageListener stage_;
   EdgeNumbering edges_;
   std::vector<FaceFallback> fallbacks_;
   std::vector<std::string> repairs_;

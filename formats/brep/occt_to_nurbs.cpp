@@ -80,22 +80,4 @@ NurbsCurve to_nurbs_curve_2d(const Handle(Geom2d_BSplineCurve)& input) {
   return out;
 }
 
-NurbsCurve to_nurbs_curve(const Handle(Geom_BSplineCurve)& input) {
-  Handle(Geom_BSplineCurve) curve = input;
-  if (curve->IsPeriodic() || !clamped(curve->KnotSequence(), curve->Degree())) {
-    curve = Handle(Geom_BSplineCurve)::DownCast(input->Copy());
-    if (curve->IsPeriodic()) curve->SetNotPeriodic();
-    if (!clamped(curve->KnotSequence(), curve->Degree())) curve->Segment(curve->FirstParameter(), curve->LastParameter());
-  }
-  NurbsCurve out;
-  out.dimension = 3;
-  out.order = curve->Degree() + 1;
-  out.knots = flat_knots(curve->KnotSequence());
-  const TColgp_Array1OfPnt& poles = curve->Poles();
-  for (int i = poles.Lower(); i <= poles.Upper(); ++i) out.points.emplace_back(poles(i).X(), poles(i).Y(), poles(i).Z());
-  if (curve->IsRational())
-    for (int i = 1; i <= curve->NbPoles(); ++i) out.weights.push_back(curve->Weight(i));
-  return out;
-}
-
 }  // namespace cadnurbs

@@ -19,7 +19,4 @@ NurbsSurface to_nurbs_surface(const Handle(Geom_BSplineSurface)& surface);
 // A 2D curve as a NurbsCurve of dimension 2 (z = 0).
 NurbsCurve to_nurbs_curve_2d(const Handle(Geom2d_BSplineCurve)& curve);
 
-// A 3D curve as a NurbsCurve of dimension 3.
-NurbsCurve to_nurbs_curve(const Handle(Geom_BSplineCurve)& curve);
-
 }  // namespace cadnurbs

@@ -12,10 +12,10 @@ namespace cadnurbs {
 
 bool has_faces(const TopoDS_Shape& shape) { return !shape.IsNull() && TopExp_Explorer(shape, TopAbs_FACE).More(); }
 
-TopoDS_Shape transfer_roots(XSControl_Reader& reader, const std::string& path) {
+TopoDS_Shape transfer_roots(XSControl_Reader& reader, const std::string& path, const ReadStageListener& stage) {
   const int roots = reader.NbRootsForTransfer();
   if (roots == 0) throw FileError(path + ": no shape in the file (no transferable roots)");
-  report_read_stage("transfer");
+  tell_stage(stage, "transfer");
   const int transferred = reader.TransferRoots();
   const TopoDS_Shape shape = reader.OneShape();
   if (transferred == 0 || shape.IsNull())

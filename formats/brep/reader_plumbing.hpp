@@ -9,15 +9,16 @@
 #include <string>
 
 #include "formats/brep/brep_translation.hpp"
+#include "formats/brep/read_stage.hpp"
 
 namespace cadnurbs {
 
 // True when the shape holds at least one face.
 bool has_faces(const TopoDS_Shape& shape);
 
-// Transfers every root of a reader whose file is already read; throws FileError naming `path` when
-// there is no root, nothing transferred, or no face.
-TopoDS_Shape transfer_roots(XSControl_Reader& reader, const std::string& path);
+// Transfers every root of a reader whose file is already read (telling `stage` "transfer"); throws
+// FileError naming `path` when there is no root, nothing transferred, or no face.
+TopoDS_Shape transfer_roots(XSControl_Reader& reader, const std::string& path, const ReadStageListener& stage);
 
 // with_xcaf() (nullopt: the document has no faces), then plain() when XCAF found none or failed (damaged
 // style or name entities can crash the XCAF transfer while the geometry still reads). OCCT failures of

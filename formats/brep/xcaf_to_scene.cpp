@@ -38,10 +38,10 @@ Eigen::Affine3d to_affine(const TopLoc_Location& location) {
 
 class XcafTranslator {
  public:
-  XcafTranslator(const Handle(TDocStd_Document)& document, double deflection)
+  XcafTranslator(const Handle(TDocStd_Document)& document, double deflection, const ReadStageListener& stage)
       : shapes_(XCAFDoc_DocumentTool::ShapeTool(document->Main())),
         colours_(XCAFDoc_DocumentTool::ColorTool(document->Main())),
-        builder_(deflection) {}
+        builder_(deflection, stage) {}
 
   // `default_name`: the name to use when XCAF gives none, or only the shape's type (its automatic name).
   SceneNode node(const TDF_Label& label, const std::string& parent_path, const std::string& default_name = "") {
@@ -104,7 +104,8 @@ class XcafTranslator {
 
 }  // namespace
 
-BrepTranslation xcaf_to_scene(const Handle(TDocStd_Document)& document, const std::string& root_name) {
+BrepTranslation xcaf_to_scene(const Handle(TDocStd_Document)& document, const std::string& root_name,
+                              const ReadStageListener& stage) {
   Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   TDF_LabelSequence free_labels;
   shapes->GetFreeShapes(free_labels);
@@ -113,7 +114,7 @@ BrepTranslation xcaf_to_scene(const Handle(TDocStd_Document)& document, const st
   builder.MakeCompound(all);
   for (int i = 1; i <= free_labels.Length(); ++i) builder.Add(all, XCAFDoc_ShapeTool::GetShape(free_labels(i)));
 
-  XcafTranslator translator(document, mesh_deflection(all));
+  XcafTranslator translator(document, mesh_deflection(all), stage);
   Scene scene;
   if (free_labels.Length() == 1) {
     // XCAF names unnamed shapes after their type ("COMPOUND", "SOLID", ...); the file's name says more.
@@ -125,8 +126,8 @@ BrepTranslation xcaf_to_scene(const Handle(TDocStd_Document)& document, const st
   return translator.finish(std::move(scene));
 }
 
-BrepTranslation shape_to_scene(const TopoDS_Shape& shape, const std::string& root_name) {
-  BrepSceneBuilder builder(mesh_deflection(shape));
+BrepTranslation shape_to_scene(const TopoDS_Shape& shape, const std::string& root_name, const ReadStageListener& stage) {
+  BrepSceneBuilder builder(mesh_deflection(shape), stage);
   Scene scene;
   scene.root.name = root_name;
   builder.add_shape(scene.root, root_name, shape, ShapeColours());

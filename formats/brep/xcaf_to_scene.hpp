@@ -6,6 +6,7 @@
 #include <string>
 
 #include "formats/brep/brep_translation.hpp"
+#include "formats/brep/read_stage.hpp"
 
 namespace cadnurbs {
 
@@ -17,9 +18,12 @@ namespace cadnurbs {
 // - names from TDataStd_Name; colours (surface colour, else generic) from XCAFDoc_ColorTool: a face's own,
 //   else its solid's/shell's, else the component's or the part's, as node and shape colours;
 // - fallback faces as meshes at 0.001 x the bounding-box diagonal of all free shapes.
-BrepTranslation xcaf_to_scene(const Handle(TDocStd_Document)& document, const std::string& root_name);
+// `stage` hears "face N" as each face starts.
+BrepTranslation xcaf_to_scene(const Handle(TDocStd_Document)& document, const std::string& root_name,
+                              const ReadStageListener& stage = {});
 
 // The same for a shape without a document: no names or colours, one root named `root_name`.
-BrepTranslation shape_to_scene(const TopoDS_Shape& shape, const std::string& root_name);
+BrepTranslation shape_to_scene(const TopoDS_Shape& shape, const std::string& root_name,
+                               const ReadStageListener& stage = {});
 
 }  // namespace cadnurbs

@@ -24,7 +24,6 @@
 #include "core/length_unit.hpp"
 #include "formats/brep/occt_errors.hpp"
 #include "formats/brep/occt_setup.hpp"
-#include "formats/brep/read_stage.hpp"
 #include "formats/brep/reader_plumbing.hpp"
 #include "formats/brep/xcaf_to_scene.hpp"
 #include "formats/common/file_io.hpp"
@@ -92,15 +91,15 @@ LengthUnit file_unit(const IGESControl_Reader& reader) {
   return LengthUnit{};
 }
 
-void read_model(IGESControl_Reader& reader, const std::string& path) {
-  report_read_stage("parse");
+void read_model(IGESControl_Reader& reader, const std::string& path, const ReadStageListener& stage) {
+  tell_stage(stage, "parse");
   const IFSelect_ReturnStatus status = reader.ReadFile(path.c_str());
   if (status != IFSelect_RetDone) throw FileError(path + ": IGES read failed: " + read_status_text(status));
   refuse_unresolved_references(reader.WS()->ModelCheckList(), reader.IGESModel(), path, "IGES");
 }
 
 
-std::optional<BrepTranslation> read_with_xcaf(const std::string& path, const std::string& stem) {
+std::optional<BrepTranslation> read_with_xcaf(const std::string& path, const std::string& stem, const ReadStageListener& stage) {
   Handle(XCAFApp_Application) application = XCAFApp_Application::GetApplication();
   Handle(TDocStd_Document) document;
   application->NewDocument("MDTV-XCAF", document);
@@ -116,9 +115,9 @@ std::optional<BrepTranslation> read_with_xcaf(const std::string& path, const std
   reader.SetColorMode(true);
   reader.SetNameMode(true);
   reader.SetLayerMode(false);
-  read_model(reader, path);
+  read_model(reader, path, stage);
   if (reader.NbRootsForTransfer() == 0) throw FileError(path + ": no shape in the file (no transferable roots)");
-  report_read_stage("transfer");
+  tell_stage(stage, "transfer");
   if (!reader.Transfer(document)) return std::nullopt;
   Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   TDF_LabelSequence free_labels;
@@ -126,30 +125,30 @@ std::optional<BrepTranslation> read_with_xcaf(const std::string& path, const std
   bool faces = false;
   for (int i = 1; i <= free_labels.Length(); ++i) faces = faces || has_faces(XCAFDoc_ShapeTool::GetShape(free_labels(i)));
   if (!faces) return std::nullopt;
-  BrepTranslation out = xcaf_to_scene(document, stem);
+  BrepTranslation out = xcaf_to_scene(document, stem, stage);
   out.scene.source_unit = file_unit(reader);
   return out;
 }
 
-BrepTranslation read_plain(const std::string& path, const std::string& stem) {
+BrepTranslation read_plain(const std::string& path, const std::string& stem, const ReadStageListener& stage) {
   IGESControl_Reader reader;
   Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-  read_model(reader, path);
-  const TopoDS_Shape shape = transfer_roots(reader, path);
-  BrepTranslation out = shape_to_scene(shape, stem);
+  read_model(reader, path, stage);
+  const TopoDS_Shape shape = transfer_roots(reader, path, stage);
+  BrepTranslation out = shape_to_scene(shape, stem, stage);
   out.scene.source_unit = file_unit(reader);
   return out;
 }
 
 }  // namespace
 
-BrepTranslation read_iges(const std::string& path) {
+BrepTranslation read_iges(const std::string& path, const ReadStageListener& stage) {
   prepare_occt();
   check_framing(path);
   precheck_iges_file(path);  // what OCCT's reader would misread or allocate for blindly
   const std::string stem = std::filesystem::path(path).stem().string();
   return read_xcaf_or_plain(
-      path, "IGES", [&] { return read_with_xcaf(path, stem); }, [&] { return read_plain(path, stem); });
+      path, "IGES", [&] { return read_with_xcaf(path, stem, stage); }, [&] { return read_plain(path, stem, stage); });
 }
 
 }  // namespace cadnurbs

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "formats/brep/brep_translation.hpp"
+#include "formats/brep/read_stage.hpp"
 
 namespace cadnurbs {
 
@@ -16,6 +17,7 @@ namespace cadnurbs {
 // one (section line counts other than its Terminate line says); "IGES read failed: ..." when OCCT cannot
 // read it or crashes on it, or an entity points to one the file lacks;
 // "no shape in the file (K of N roots transferred)"; "no faces in the file".
-BrepTranslation read_iges(const std::string& path);
+// `stage` (may be empty) hears each stage of the read as it starts (formats/brep/read_stage.hpp).
+BrepTranslation read_iges(const std::string& path, const ReadStageListener& stage = {});
 
 }  // namespace cadnurbs

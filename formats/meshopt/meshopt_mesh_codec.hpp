@@ -5,7 +5,7 @@
 // compressor on purpose: the size people compare is gzip of the bytes (formats/common/gzip.hpp),
 // which the caller takes.
 //
-// The mesh is taken as given: no welding here (weld it first, e.g. with analysis/weld_exact, or the
+// The mesh is taken as given: no welding here (weld it first, e.g. with analysis/mesh/weld_exact, or the
 // index codec sees a triangle soup).
 //
 // Bytes (little-endian): "CNMO", version 1 (uint8), position bits (uint8), vertex count and triangle

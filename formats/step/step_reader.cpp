@@ -23,7 +23,6 @@
 #include "formats/common/file_probe.hpp"
 #include "formats/brep/occt_errors.hpp"
 #include "formats/brep/occt_setup.hpp"
-#include "formats/brep/read_stage.hpp"
 #include "formats/brep/reader_plumbing.hpp"
 #include "formats/brep/xcaf_to_scene.hpp"
 #include "formats/common/file_io.hpp"
@@ -59,8 +58,8 @@ LengthUnit file_unit(STEPControl_Reader& reader) {
 }
 
 // Reads the file into `reader`, refusing what OCCT could not read.
-void read_model(STEPControl_Reader& reader, const std::string& path) {
-  report_read_stage("parse");
+void read_model(STEPControl_Reader& reader, const std::string& path, const ReadStageListener& stage) {
+  tell_stage(stage, "parse");
   const IFSelect_ReturnStatus status = reader.ReadFile(path.c_str());
   if (status != IFSelect_RetDone) throw FileError(path + ": STEP read failed: " + read_status_text(status));
   const Handle(StepData_StepModel) model = reader.StepModel();
@@ -69,7 +68,7 @@ void read_model(STEPControl_Reader& reader, const std::string& path) {
 
 
 // Through XCAF (names, colours, assemblies). Empty optional when XCAF gave no shape.
-std::optional<BrepTranslation> read_with_xcaf(const std::string& path, const std::string& stem) {
+std::optional<BrepTranslation> read_with_xcaf(const std::string& path, const std::string& stem, const ReadStageListener& stage) {
   Handle(XCAFApp_Application) application = XCAFApp_Application::GetApplication();
   Handle(TDocStd_Document) document;
   application->NewDocument("MDTV-XCAF", document);
@@ -89,9 +88,9 @@ std::optional<BrepTranslation> read_with_xcaf(const std::string& path, const std
   reader.SetGDTMode(false);
   reader.SetMatMode(false);
   reader.SetViewMode(false);
-  read_model(reader.ChangeReader(), path);
+  read_model(reader.ChangeReader(), path, stage);
   if (reader.NbRootsForTransfer() == 0) throw FileError(path + ": no shape in the file (no transferable roots)");
-  report_read_stage("transfer");
+  tell_stage(stage, "transfer");
   if (!reader.Transfer(document)) return std::nullopt;
   Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   TDF_LabelSequence free_labels;
@@ -99,31 +98,31 @@ std::optional<BrepTranslation> read_with_xcaf(const std::string& path, const std
   bool faces = false;
   for (int i = 1; i <= free_labels.Length(); ++i) faces = faces || has_faces(XCAFDoc_ShapeTool::GetShape(free_labels(i)));
   if (!faces) return std::nullopt;
-  BrepTranslation out = xcaf_to_scene(document, stem);
+  BrepTranslation out = xcaf_to_scene(document, stem, stage);
   out.scene.source_unit = file_unit(reader.ChangeReader());
   return out;
 }
 
 // Without XCAF: geometry only.
-BrepTranslation read_plain(const std::string& path, const std::string& stem) {
+BrepTranslation read_plain(const std::string& path, const std::string& stem, const ReadStageListener& stage) {
   STEPControl_Reader reader;
   Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-  read_model(reader, path);
-  const TopoDS_Shape shape = transfer_roots(reader, path);
-  BrepTranslation out = shape_to_scene(shape, stem);
+  read_model(reader, path, stage);
+  const TopoDS_Shape shape = transfer_roots(reader, path, stage);
+  BrepTranslation out = shape_to_scene(shape, stem, stage);
   out.scene.source_unit = file_unit(reader);
   return out;
 }
 
 }  // namespace
 
-BrepTranslation read_step(const std::string& path) {
+BrepTranslation read_step(const std::string& path, const ReadStageListener& stage) {
   prepare_occt();
   check_framing(path);
   precheck_step_file(path);  // what OCCT's parser would crash or hang on
   const std::string stem = std::filesystem::path(path).stem().string();
   return read_xcaf_or_plain(
-      path, "STEP", [&] { return read_with_xcaf(path, stem); }, [&] { return read_plain(path, stem); });
+      path, "STEP", [&] { return read_with_xcaf(path, stem, stage); }, [&] { return read_plain(path, stem, stage); });
 }
 
 }  // namespace cadnurbs

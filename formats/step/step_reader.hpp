@@ -4,6 +4,7 @@
 #include <string>
 
 #include "formats/brep/brep_translation.hpp"
+#include "formats/brep/read_stage.hpp"
 
 namespace cadnurbs {
 
@@ -15,6 +16,7 @@ namespace cadnurbs {
 // header or, truncated, without END-ISO-10303-21 at its end; "STEP read failed: ..." when OCCT cannot read
 // it (syntax, or an entity referring to an entity the file lacks: its #number is named) or crashes on it;
 // "no shape in the file (K of N roots transferred)"; "no faces in the file".
-BrepTranslation read_step(const std::string& path);
+// `stage` (may be empty) hears each stage of the read as it starts (formats/brep/read_stage.hpp).
+BrepTranslation read_step(const std::string& path, const ReadStageListener& stage = {});
 
 }  // namespace cadnurbs

@@ -158,24 +158,4 @@ std::optional<FieldType> field_type(const NodeSchema& schema, std::string_view n
   return std::nullopt;
 }
 
-std::string_view field_type_name(FieldType type) {
-  switch (type) {
-    case T::SFBool: return "SFBool";
-    case T::SFInt32: return "SFInt32";
-    case T::SFFloat: return "SFFloat";
-    case T::SFString: return "SFString";
-    case T::MFFloat: return "MFFloat";
-    case T::MFInt32: return "MFInt32";
-    case T::MFVec2f: return "MFVec2f";
-    case T::MFVec3f: return "MFVec3f";
-    case T::MFString: return "MFString";
-    case T::SFColor: return "SFColor";
-    case T::SFVec3f: return "SFVec3f";
-    case T::SFRotation: return "SFRotation";
-    case T::SFNode: return "SFNode";
-    case T::MFNode: return "MFNode";
-  }
-  return "?";
-}
-
 }  // namespace cadnurbs

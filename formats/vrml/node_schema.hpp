@@ -32,7 +32,4 @@ const NodeSchema* node_schema(VrmlDialect dialect, std::string_view type);
 // The type of field `name` of the node, or nothing when the node has no such field in the subset.
 std::optional<FieldType> field_type(const NodeSchema& schema, std::string_view name);
 
-// "MFVec3f", "SFNode"... for error messages.
-std::string_view field_type_name(FieldType type);
-
 }  // namespace cadnurbs

@@ -34,7 +34,8 @@ struct VrmlWriteOptions {
   bool pretty = false;
   // Both set: every NURBS face gets the uTessellation / vTessellation / trimming-curve tessellation
   // counts with which a viewer that tessellates uniformly draws it within about `display_deviation`
-  // (model units; the converter passes analysis/tessellation_hints, which the writer may not call itself).
+  // (model units; the converter passes analysis/tessellation/plan_tessellation_hints, which the writer
+  // may not call itself).
   double display_deviation = 0.0;
   TessellationHints (*tessellation_hints)(const TrimmedSurface& face, double deviation) = nullptr;
   // write_vrml: the file gzip'd (.wrz, .x3dvz, .x3dz), as browsers read it.

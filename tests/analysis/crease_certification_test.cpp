@@ -6,8 +6,8 @@
 // their corners' errors taken as D, and a flat piece (bound 0) then passed without a sample.
 #include <gtest/gtest.h>
 
-#include "analysis/measure_deviation.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/measure/measure_deviation.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 
 namespace cadnurbs {

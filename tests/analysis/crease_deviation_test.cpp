@@ -9,10 +9,10 @@
 
 #include <string>
 
-#include "analysis/measure_deviation.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/sew_faces.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/measure/measure_deviation.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/sewing/sew_faces.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "core/bounding_box.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 

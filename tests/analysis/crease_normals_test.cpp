@@ -1,7 +1,7 @@
 // with_crease_normals: the welded STL cube (sharp at 30 degrees, one normal per corner at 100), a
 // tessellated cylinder (smooth sides, sharp caps), and the edge kinds that never join; edges near the
 // crease angle judged as its definition says, and the same bits from any number of threads.
-#include "analysis/crease_normals.hpp"
+#include "analysis/normals/crease_normals.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <numbers>
 #include <set>
 
-#include "analysis/weld_vertices.hpp"
+#include "analysis/mesh/weld_vertices.hpp"
 #include "core/worker_threads.hpp"
 #include "weld_test_meshes.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "analysis/domain_triangulation.hpp"
+#include "analysis/tessellation/domain_triangulation.hpp"
 #include "core/polygon_2d.hpp"
 
 namespace cadnurbs {

@@ -2,8 +2,8 @@
 // face twice does not.
 #include <gtest/gtest.h>
 
-#include "analysis/face_area_check.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/measure/face_area_check.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "analysis_shapes.hpp"
 
 namespace cadnurbs {

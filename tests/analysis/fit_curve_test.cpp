@@ -1,6 +1,6 @@
 // fit_curve and its parts: the conjugate-gradient minimiser with constraints, the reduced energy's
 // gradient against finite differences, and fits of generated animation paths within a deviation D.
-#include "analysis/fit_curve.hpp"
+#include "analysis/fitting/fit_curve.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/curve_fit_energy.hpp"
-#include "analysis/polak_ribiere.hpp"
+#include "analysis/fitting/curve_fit_energy.hpp"
+#include "analysis/fitting/polak_ribiere.hpp"
 #include "core/knot_vector.hpp"
 
 namespace cadnurbs {

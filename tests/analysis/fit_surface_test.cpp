@@ -1,7 +1,7 @@
 // fit_surface and its energy: the separated solve against a plain least-squares solve, the knot
 // gradient against finite differences, a dense bicubic surface refitted within D, knots gathering at a
 // ridge, and the refusals.
-#include "analysis/fit_surface.hpp"
+#include "analysis/fitting/fit_surface.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/surface_fit_energy.hpp"
+#include "analysis/fitting/surface_fit_energy.hpp"
 #include "core/knot_vector.hpp"
 
 namespace cadnurbs {

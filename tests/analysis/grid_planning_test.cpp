@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "analysis/surface_deviation_bound.hpp"
-#include "analysis/surface_evaluator.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/eval/surface_deviation_bound.hpp"
+#include "analysis/eval/surface_evaluator.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "analysis/tessellation/grid_planning.hpp"
-#include "analysis/trimmed_surface_area.hpp"
+#include "analysis/measure/trimmed_surface_area.hpp"
 #include "analysis_shapes.hpp"
 
 namespace cadnurbs {

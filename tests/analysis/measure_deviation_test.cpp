@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "analysis/measure_deviation.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/measure/measure_deviation.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "analysis_shapes.hpp"
 #include "core/geometry_error.hpp"
 

@@ -1,12 +1,12 @@
 // mesh_distance's RMS is a surface integral: a sheet whose halves are meshed very unevenly measures
 // the closed form, where pooling the samples by count would follow the finely meshed half.
-#include "analysis/mesh_distance.hpp"
+#include "analysis/measure/mesh_distance.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "analysis/sample_triangles.hpp"
+#include "analysis/mesh/sample_triangles.hpp"
 
 namespace cadnurbs {
 namespace {

@@ -2,7 +2,7 @@
 // strip is one non-orientable component, duplicates are dropped; on the corpus STL files the crease
 // normals then find no inconsistent edge in an orientable component and every closed one has volume > 0.
 // The side partners handed out with the result are the result's own (flips and dropped duplicates moved).
-#include "analysis/orient_faces.hpp"
+#include "analysis/normals/orient_faces.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,8 @@
 #include <numbers>
 #include <random>
 
-#include "analysis/crease_normals.hpp"
-#include "analysis/weld_vertices.hpp"
+#include "analysis/normals/crease_normals.hpp"
+#include "analysis/mesh/weld_vertices.hpp"
 #include "core/worker_threads.hpp"
 #include "formats/stl/stl_reader.hpp"
 #include "weld_test_meshes.hpp"

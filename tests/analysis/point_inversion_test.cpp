@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "analysis/point_inversion.hpp"
-#include "analysis/surface_evaluator.hpp"
+#include "analysis/eval/point_inversion.hpp"
+#include "analysis/eval/surface_evaluator.hpp"
 #include "analysis_shapes.hpp"
 #include "core/trim_segment_parameters.hpp"
 

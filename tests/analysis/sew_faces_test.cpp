@@ -1,11 +1,11 @@
-// Sewing (analysis/sew_faces): edges recovered from geometry make tessellate_to_deviation's meshes
+// Sewing (analysis/sewing/sew_faces): edges recovered from geometry make tessellate_to_deviation's meshes
 // watertight, and only edges that coincide along their whole length are sewn.
 #include <gtest/gtest.h>
 
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/sew_faces.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/sewing/sew_faces.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "core/split_curve.hpp"
 #include "analysis_shapes.hpp"
 #include "samples/capping.hpp"

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "analysis/report/storage_crossover.hpp"
-#include "analysis/storage_accounting.hpp"
+#include "report/storage_crossover.hpp"
+#include "report/storage_accounting.hpp"
 #include "analysis_shapes.hpp"
 
 using namespace cadnurbs;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "analysis/surface_deviation_bound.hpp"
-#include "analysis/surface_evaluator.hpp"
+#include "analysis/eval/surface_deviation_bound.hpp"
+#include "analysis/eval/surface_evaluator.hpp"
 #include "analysis_shapes.hpp"
 
 namespace cadnurbs {

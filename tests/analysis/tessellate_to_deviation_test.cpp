@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <functional>
 
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/measure_deviation.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/measure/measure_deviation.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "analysis_shapes.hpp"
 #include "core/geometry_error.hpp"
 

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "analysis/trimmed_surface_area.hpp"
+#include "analysis/measure/trimmed_surface_area.hpp"
 #include "analysis_shapes.hpp"
 #include "core/geometry_error.hpp"
 
@@ -44,7 +44,7 @@ TEST(TrimmedSurfaceArea, DiscAreaFromATrimCurveOffTheKnotLines) {
 
 // LED_D5.0mm-3.step's plane: a hole that shares a tiny side with its outer loop on the domain's edge.
 // `info` gave the outer loop's area with the hole not taken out (25.6 mm^2 for 6.0) until the even-odd
-// fill learnt that a side two loops share bounds nothing (analysis/loop_sides.hpp).
+// fill learnt that a side two loops share bounds nothing (analysis/tessellation/loop_sides.hpp).
 TEST(TrimmedSurfaceArea, AHoleSharingASideWithItsOuterLoopIsTakenOut) {
   TrimmedSurface t = test::trimmed_square(10, 0.4, 0.15);
   const Eigen::Vector2d p(0, 0.5), q(0, 0.5 + 1e-8);

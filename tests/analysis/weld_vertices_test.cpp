@@ -1,6 +1,6 @@
 // weld_vertices: the STL cube, exactness at grid-cell borders, chains, a brute-force reference, and the
 // corpus STL files against OpenMesh's STL reader (which merges equal float coordinates).
-#include "analysis/weld_vertices.hpp"
+#include "analysis/mesh/weld_vertices.hpp"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>

@@ -37,7 +37,7 @@ SurfaceMeasure scene_measure(const Scene& scene) {
 struct Format {
   const char* extension;
   void (*write)(const std::string&, const Scene&);
-  BrepTranslation (*read)(const std::string&);
+  BrepTranslation (*read)(const std::string&, const ReadStageListener&);
 };
 
 class CappingExchange : public ::testing::TestWithParam<std::tuple<std::string, int>> {
@@ -57,7 +57,7 @@ TEST_P(CappingExchange, RoundTripKeepsFacesAreaNamesAndColours) {
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder.path()), std::filesystem::directory_iterator()), 1)
       << "the temporary file is gone";
 
-  const BrepTranslation back = format.read(path);
+  const BrepTranslation back = format.read(path, {});
   EXPECT_EQ(back.face_count, 3);
   EXPECT_TRUE(back.fallbacks.empty());
   for (const auto& f : back.fallbacks) ADD_FAILURE() << "fallback face " << f.face_index << ": " << f.reason;

@@ -4,11 +4,11 @@
 
 #include <cstdio>
 
-#include "analysis/compact_scene.hpp"
-#include "analysis/mesh_distance.hpp"
-#include "analysis/scene_area.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/compaction/compact_scene.hpp"
+#include "analysis/measure/mesh_distance.hpp"
+#include "analysis/measure/scene_area.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "core/bounding_box.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 #include "formats/vrml/vrml_writer.hpp"

@@ -12,13 +12,13 @@
 #include <cstdio>
 #include <map>
 
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/face_area_check.hpp"
-#include "analysis/measure_deviation.hpp"
-#include "analysis/mesh_distance.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/measure/face_area_check.hpp"
+#include "analysis/measure/measure_deviation.hpp"
+#include "analysis/measure/mesh_distance.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "core/bounding_box.hpp"
 #include "closed_solid.hpp"
 #include "corpus_manifest.hpp"

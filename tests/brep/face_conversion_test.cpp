@@ -36,9 +36,9 @@
 #include <cmath>
 #include <map>
 
-#include "analysis/measure_deviation.hpp"
-#include "analysis/surface_evaluator.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/measure/measure_deviation.hpp"
+#include "analysis/eval/surface_evaluator.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "core/trim_segment_parameters.hpp"
 #include "formats/brep/xcaf_to_scene.hpp"
 #include "occt_reference.hpp"

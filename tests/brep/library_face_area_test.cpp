@@ -2,8 +2,8 @@
 // mesh area within check_face_area's allowance of its trimmed NURBS area.
 #include <gtest/gtest.h>
 
-#include "analysis/face_area_check.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/measure/face_area_check.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "core/bounding_box.hpp"
 #include "corpus_manifest.hpp"
 #include "part_library.hpp"

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <unistd.h>
 
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "core/bounding_box.hpp"
 #include "corpus_manifest.hpp"
 #include "formats/vrml/vrml_reader.hpp"

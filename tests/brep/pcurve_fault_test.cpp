@@ -14,10 +14,10 @@
 #include <cmath>
 #include <vector>
 
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "formats/brep/rebuild_stray_pcurves.hpp"
 #include "formats/brep/xcaf_to_scene.hpp"
 #include "read_back_watertight.hpp"

@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <map>
 
-#include "analysis/compact_scene.hpp"
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/sew_faces.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/compaction/compact_scene.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/sewing/sew_faces.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "core/bounding_box.hpp"
 #include "core/repair_trimming_loops.hpp"
 #include "formats/vrml/vrml_reader.hpp"

@@ -12,9 +12,9 @@
 // Reports failures through GoogleTest and prints one line of figures per form.
 #include <string>
 
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/sew_faces.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/sewing/sew_faces.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "core/scene.hpp"
 #include "formats/vrml/vrml_writer.hpp"
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "analysis/triangulate_polygon.hpp"
+#include "analysis/mesh/triangulate_polygon.hpp"
 #include "core/nurbs_curve.hpp"
 #include "core/nurbs_surface.hpp"
 #include "core/point_in_loops.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // Area and enclosed volume of trimmed NURBS surfaces, integrated from the core model alone (no OCCT): the
 // trimmed (u, v) domain, its loops sampled as polygons, triangulated with CGAL together with an interior
-// grid (analysis/triangulate_polygon, even-odd rule); |Su x Sv| and P . (Su x Sv) / 3 integrated over each
+// grid (analysis/mesh/triangulate_polygon, even-odd rule); |Su x Sv| and P . (Su x Sv) / 3 integrated over each
 // triangle by a 7-point Gauss rule; the slivers between the polygon and the curved trims added back
 // (their area by Green's theorem, weighted by the integrand on the curve).
 #include <Eigen/Geometry>

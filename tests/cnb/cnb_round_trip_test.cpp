@@ -6,9 +6,9 @@
 #include <cmath>
 #include <iostream>
 
-#include "analysis/compact_scene.hpp"
-#include "analysis/paired_scene_deviation.hpp"
-#include "analysis/tessellation_hints.hpp"
+#include "analysis/compaction/compact_scene.hpp"
+#include "analysis/measure/paired_scene_deviation.hpp"
+#include "analysis/tessellation/plan_tessellation_hints.hpp"
 #include "core/bounding_box.hpp"
 #include "core/nurbs_surface.hpp"
 #include "formats/cnb/cnb_quantisation.hpp"
@@ -260,7 +260,7 @@ TEST(CnbSteps, ScaledNodesKeepTheWorldDeviation) {
 std::string x3dv_as_convert_writes(const Scene& scene) {
   VrmlWriteOptions options;
   options.display_deviation = 1e-3 * scene_bounding_box(scene).diagonal().norm();
-  options.tessellation_hints = &tessellation_hints;
+  options.tessellation_hints = &plan_tessellation_hints;
   return format_vrml(scene, options);
 }
 

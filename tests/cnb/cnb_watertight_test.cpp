@@ -4,10 +4,10 @@
 
 #include <iostream>
 
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "core/bounding_box.hpp"
 #include "formats/cnb/cnb_reader.hpp"
 #include "formats/cnb/cnb_writer.hpp"

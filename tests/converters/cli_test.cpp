@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "converters/file_formats.hpp"
 #include "formats/common/file_io.hpp"
 #include "samples/capping_shapes.hpp"

@@ -31,8 +31,13 @@ class CommandTest : public ::testing::Test {
 
   // `cadnurbs ARGUMENTS` with stdout and stderr kept in the folder (stdout.txt, stderr.txt).
   CommandResult run(const std::string& arguments, const std::string& environment = "") {
+    return run_program(CADNURBS_EXE, arguments, environment);
+  }
+  // The same with another executable that runs the cadnurbs command line.
+  CommandResult run_program(const std::string& program, const std::string& arguments,
+                            const std::string& environment = "") {
     const std::string out = path("stdout.txt"), err = path("stderr.txt");
-    const int status = std::system((environment + CADNURBS_EXE + " " + arguments + " >" + out + " 2>" + err).c_str());
+    const int status = std::system((environment + program + " " + arguments + " >" + out + " 2>" + err).c_str());
     return {WEXITSTATUS(status), read_file(out), read_file(err)};
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }

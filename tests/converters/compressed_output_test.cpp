@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "analysis/measure_deviation.hpp"
-#include "analysis/scene_area.hpp"
+#include "analysis/measure/measure_deviation.hpp"
+#include "analysis/measure/scene_area.hpp"
 #include "converters/file_formats.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/draco/draco_mesh_codec.hpp"

@@ -5,7 +5,7 @@
 #include <set>
 
 #include "command_fixture.hpp"
-#include "formats/obj/loop_control_obj.hpp"
+#include "formats/obj/control_mesh_obj.hpp"
 
 namespace fs = std::filesystem;
 using namespace cadnurbs;
@@ -33,10 +33,10 @@ TEST_F(FitLoopCommand, SavedControlMeshGivesTheSameSurface) {
   ASSERT_EQ(fitted.status, 0) << fitted.err;
   const auto again = run("fit-loop " + path("control.obj") + " --input " + kPlate + " --surface " + path("again.obj"));
   ASSERT_EQ(again.status, 0) << again.err;
-  const LoopControlMesh control = read_loop_control_obj(path("control.obj"));
+  const SubdivisionControlMesh control = read_control_mesh_obj(path("control.obj"));
   EXPECT_EQ(control.positions.size(), 60u);
   EXPECT_FALSE(control.crease_edges.empty());
-  const LoopControlMesh a = read_loop_control_obj(path("fitted.obj")), b = read_loop_control_obj(path("again.obj"));
+  const SubdivisionControlMesh a = read_control_mesh_obj(path("fitted.obj")), b = read_control_mesh_obj(path("again.obj"));
   EXPECT_EQ(a.positions, b.positions);  // bit-equal: the tags came back, so the rules did too
   EXPECT_EQ(a.triangles, b.triangles);
   EXPECT_EQ(a.triangles.size(), control.triangles.size() * 64);

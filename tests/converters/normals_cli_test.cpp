@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "analysis/scene_triangles.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
 #include "command_fixture.hpp"
 #include "converters/file_formats.hpp"
 #include "formats/stl/stl_reader.hpp"

@@ -178,7 +178,7 @@ TEST_F(Report, ASphereMeshWithinATenthOfAPercentIsNineTimesItsNurbsFile) {
   EXPECT_LT(cnb["bytes"].get<long>(), representation(part, "meshopt")["gzip_bytes"].get<long>());
 }
 
-TEST_F(Report, AnStlGetsItsFittedLoopControlMeshWithinD) {
+TEST_F(Report, AnStlGetsItsFittedControlMeshWithinD) {
   const std::string in = std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-90.stl";
   const CommandResult r = run("report " + in + " --format json -o " + path("r.json") + " --files " + path("files"));
   ASSERT_EQ(r.status, 0) << r.err;

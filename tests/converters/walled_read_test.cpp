@@ -1,6 +1,7 @@
-// converters/walled_read through the real command: OCCT's crashes, hangs and allocations end the child
+// converters/walled_read through the real command line: OCCT's crashes, hangs and allocations end the child
 // process, not cadnurbs, and come back as one line naming the file, the stage and the reason; a file read
-// through the wall converts to the same bytes as one read in-process.
+// through the wall converts to the same bytes as one read in-process. The faults are made by
+// faulty_reader_cadnurbs (the same command line with a fault hook in its reading child).
 #include <algorithm>
 #include <fstream>
 
@@ -13,7 +14,13 @@ namespace {
 const std::string kCorpusStep = CADNURBS_SHARED_DIR "/corpus/step/io1-cm-214.stp";
 const std::string kCorpusIges = CADNURBS_SHARED_DIR "/corpus/iges/Cube_10x10.igs";
 
-class WalledRead : public CommandTest {};
+class WalledRead : public CommandTest {
+ protected:
+  // cadnurbs ARGUMENTS with the fault STAGE:ACTION in its reading child (faulty_reader_cadnurbs.cpp).
+  CommandResult run_with_fault(const std::string& arguments, const std::string& fault) {
+    return run_program(FAULTY_READER_CADNURBS, arguments, "CADNURBS_TEST_FAULT='" + fault + "' ");
+  }
+};
 
 TEST_F(WalledRead, DeeplyNestedPointIsOneLine) {
   // The crash: a CARTESIAN_POINT nested 100,000 parentheses deep overflowed OCCT's parser stack.
@@ -34,7 +41,7 @@ TEST_F(WalledRead, DeeplyNestedPointIsOneLine) {
 }
 
 TEST_F(WalledRead, CrashWhileParsingIsNamed) {
-  const CommandResult r = run("info " + kCorpusIges, "CADNURBS_WALL_FAULT=parse:segv ");
+  const CommandResult r = run_with_fault("info " + kCorpusIges, "parse:segv");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "cadnurbs info: " + kCorpusIges + ": crashed with SIGSEGV while parsing\n");
   EXPECT_EQ(r.out, "");
@@ -42,7 +49,7 @@ TEST_F(WalledRead, CrashWhileParsingIsNamed) {
 
 TEST_F(WalledRead, CrashInAStageIsNamed) {
   const std::string out = path("out.x3dv");
-  const CommandResult r = run("convert " + kCorpusStep + " -o " + out, "CADNURBS_WALL_FAULT=transfer:segv ");
+  const CommandResult r = run_with_fault("convert " + kCorpusStep + " -o " + out, "transfer:segv");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "cadnurbs convert: " + kCorpusStep + ": crashed with SIGSEGV while transferring\n");
   EXPECT_FALSE(std::filesystem::exists(out));
@@ -51,7 +58,7 @@ TEST_F(WalledRead, CrashInAStageIsNamed) {
 TEST_F(WalledRead, HangIsStoppedAtTheTimeLimit) {
   // The child sleeps for ever once parsing starts; on a loaded machine starting the child (loading this
   // executable and OCCT) can itself take a second, so the stage named is "starting" or "parsing".
-  const CommandResult r = run("info --time-limit 1 " + kCorpusIges, "CADNURBS_WALL_FAULT=parse:sleep ");
+  const CommandResult r = run_with_fault("info --time-limit 1 " + kCorpusIges, "parse:sleep");
   EXPECT_EQ(r.status, 1);
   const std::string head = "cadnurbs info: " + kCorpusIges + ": exceeded 1 s while ";
   EXPECT_TRUE(r.err == head + "parsing\n" || r.err == head + "starting\n") << r.err;
@@ -60,14 +67,14 @@ TEST_F(WalledRead, HangIsStoppedAtTheTimeLimit) {
 TEST_F(WalledRead, CpuLimitIsNamed) {
   // The kernel's SIGXCPU at RLIMIT_CPU (raised by the hook: a busy child reaches the wall-time limit
   // first, whose message the test above checks).
-  const CommandResult r = run("info --time-limit 2.5 " + kCorpusStep, "CADNURBS_WALL_FAULT=transfer:xcpu ");
+  const CommandResult r = run_with_fault("info --time-limit 2.5 " + kCorpusStep, "transfer:xcpu");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "cadnurbs info: " + kCorpusStep + ": exceeded 2.5 s of CPU time while transferring\n");
   EXPECT_EQ(r.out, "");
 }
 
 TEST_F(WalledRead, AllocationIsStoppedAtTheMemoryLimit) {
-  const CommandResult r = run("info --memory-limit 256 " + kCorpusStep, "CADNURBS_WALL_FAULT='face 2:alloc' ");
+  const CommandResult r = run_with_fault("info --memory-limit 256 " + kCorpusStep, "face 2:alloc");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "cadnurbs info: " + kCorpusStep + ": exceeded the memory limit of 256 MB while converting face 2\n");
 }
@@ -91,14 +98,14 @@ TEST_F(WalledRead, LimitsMustBePositive) {
 }
 
 TEST_F(WalledRead, WalledConversionWritesTheInProcessBytes) {
-  // This test process does not serve __read-brep, so run_convert here reads in-process.
-  // cadnurbs convert runs one thread when it reads, so its child is a plain fork; CADNURBS_WALL_EXEC=1
-  // makes it exec itself, as a process with threads must.
+  // run_convert called here reads in-process (its context has no wall). cadnurbs convert runs one thread
+  // when it reads, so its child is a plain fork; faulty_reader_cadnurbs with CADNURBS_TEST_EXEC=1 execs
+  // itself, as a process with threads must.
   for (const std::string& input : {kCorpusStep, kCorpusIges}) {
     const std::string forked = path("forked.x3dv"), execed = path("execed.x3dv"), in_process = path("in_process.x3dv");
     const CommandResult r = run("convert " + input + " -o " + forked);
     ASSERT_EQ(r.status, 0) << r.err;
-    const CommandResult e = run("convert " + input + " -o " + execed, "CADNURBS_WALL_EXEC=1 ");
+    const CommandResult e = run_program(FAULTY_READER_CADNURBS, "convert " + input + " -o " + execed, "CADNURBS_TEST_EXEC=1 ");
     ASSERT_EQ(e.status, 0) << e.err;
     ASSERT_EQ(run_convert({input, "-o", in_process}), 0);
     const std::string expected = read_file(in_process);

@@ -1,8 +1,10 @@
-// Number formatting: fewest characters within the tolerance, no "-0", integers as integers.
+// Number formatting: format_number (fewest characters within the tolerance, no "-0", integers as integers)
+// and number_text (printf's %g, for messages).
 #include <gtest/gtest.h>
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "core/number_format.hpp"
@@ -102,6 +104,27 @@ TEST(NumberFormat, RefusesWhatCannotBeWritten) {
   EXPECT_THROW(format_number(INFINITY, {}), std::invalid_argument);
   EXPECT_THROW(format_number(1.0, {-1.0, 0}), std::invalid_argument);
   EXPECT_THROW(format_number(1.0, {0, 18}), std::invalid_argument);
+}
+
+TEST(NumberText, WritesWhatPrintfPercentGWrites) {
+  EXPECT_EQ(number_text(0.1, 17), "0.10000000000000001");
+  EXPECT_EQ(number_text(-1.0 / 3.0, 17), "-0.33333333333333331");
+  EXPECT_EQ(number_text(123456.5, 6), "123456");  // a tie, rounded to even
+  EXPECT_EQ(number_text(123456.5, 17), "123456.5");
+  EXPECT_EQ(number_text(1234567.0, 6), "1.23457e+06");
+  EXPECT_EQ(number_text(0.000123456, 3), "0.000123");
+  EXPECT_EQ(number_text(0.0000123, 3), "1.23e-05");
+  EXPECT_EQ(number_text(120.0, 6), "120");
+  EXPECT_EQ(number_text(1e21, 6), "1e+21");
+  EXPECT_EQ(number_text(0.0, 4), "0");
+  EXPECT_EQ(number_text(-0.0, 4), "-0");  // unlike format_number: a message shows what the value is
+  EXPECT_EQ(number_text(std::numeric_limits<double>::quiet_NaN(), 3), "nan");
+  EXPECT_EQ(number_text(-INFINITY, 8), "-inf");
+  EXPECT_EQ(number_text(7.0 / 3.0, -1), "2");  // fewer than one digit counts as one (printf: six)
+  // Longer than a double's usual text: 1e80 to its last exact digit.
+  const std::string exact = "100000000000000000026609864708367276537402401181200809098131977453489758916313088";
+  EXPECT_EQ(number_text(1e80, 100), exact);
+  EXPECT_EQ(message_number(3337.0), "3.34e+03");
 }
 
 TEST(NumberFormat, AppendsToExistingText) {

@@ -1,6 +1,6 @@
-// analysis/fit_position_path: keyframe paths as one polynomial NURBS curve within a deviation, checked
+// analysis/fitting/fit_position_path: keyframe paths as one polynomial NURBS curve within a deviation, checked
 // at every key and halfway between keys, and the error bound against closed forms.
-#include "analysis/fit_position_path.hpp"
+#include "analysis/fitting/fit_position_path.hpp"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "core/geometry_error.hpp"
 #include "core/length_unit.hpp"
 #include "formats/gltf/glb_writer.hpp"

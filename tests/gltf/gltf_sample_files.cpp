@@ -11,8 +11,8 @@
 #include <filesystem>
 #include <string>
 
-#include "analysis/scene_triangles.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "core/length_unit.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/gltf/glb_writer.hpp"

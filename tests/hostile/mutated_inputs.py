@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Damaged variants of real files, and what cadnurbs does with them.
 
-usage: mutated_inputs.py CADNURBS WORK_DIR SEED...
+usage: mutated_inputs.py [--per-kind N] CADNURBS WORK_DIR SEED...
 
 For every SEED (STEP, IGES, STL ASCII or binary, VRML97, X3D classic, X3D XML) it writes 22 variants
 into WORK_DIR/inputs, seven kinds of damage an attacker or a broken exporter produces:
@@ -255,9 +255,15 @@ def check(cadnurbs, variant, folder, command_name):
 
 
 def main():
-    if len(sys.argv) < 4:
+    args = sys.argv[1:]
+    per_kind = None
+    if args[:1] == ['--per-kind']:
+        if len(args) < 2 or not args[1].isdigit() or int(args[1]) < 1:
+            raise SystemExit(__doc__)
+        per_kind, args = int(args[1]), args[2:]
+    if len(args) < 3:
         raise SystemExit(__doc__)
-    cadnurbs, work, seeds = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3:]
+    cadnurbs, work, seeds = os.path.abspath(args[0]), os.path.abspath(args[1]), args[2:]
     shutil.rmtree(work, ignore_errors=True)
     inputs, runs = os.path.join(work, 'inputs'), os.path.join(work, 'runs')
     os.makedirs(inputs)
@@ -269,7 +275,9 @@ def main():
         kind_of_seed = seed_type(seed, data)
         stem, ext = os.path.splitext(os.path.basename(seed))
         for kind, make in KINDS:
-            for name, damaged in make(kind_of_seed, data, rng):
+            for n, (name, damaged) in enumerate(make(kind_of_seed, data, rng)):
+                if per_kind is not None and n >= per_kind:
+                    continue  # made all the same, so that the random numbers stay those of a whole run
                 path = os.path.join(inputs, f'{stem}.{kind}-{name}{ext}')
                 with open(path, 'wb') as f:
                     f.write(damaged)

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "analysis/mesh_encoding.hpp"
+#include "report/smallest_compressed_mesh.hpp"
 #include "core/geometry_error.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 

@@ -1,4 +1,4 @@
-// The NURSS text file (analysis/nurss/nurss_text) and the report's NURSS figures (nurss_figures): a bit-exact
+// The NURSS text file (formats/nurss/nurss_text) and the report's NURSS figures (nurss_figures): a bit-exact
 // round trip of the capping's NURSS, the float count of the written text against the thesis's count, exact
 // messages for damaged files, the limit mesh within D away from the n-gons, and the refusal of nets that are
 // not quadratic.
@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <sstream>
 
-#include "analysis/nurss/nurss_figures.hpp"
+#include "report/nurss_figures.hpp"
 #include "analysis/nurss/nurss_from_nurbs.hpp"
 #include "analysis/nurss/nurss_limit_mesh.hpp"
-#include "analysis/nurss/nurss_text.hpp"
+#include "formats/nurss/nurss_text.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 

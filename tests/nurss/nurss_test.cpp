@@ -7,14 +7,14 @@
 #include <cstdio>
 #include <numbers>
 
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/measure_deviation.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/measure/measure_deviation.hpp"
 #include "analysis/nurss/nurss_face_point.hpp"
 #include "analysis/nurss/nurss_from_nurbs.hpp"
 #include "analysis/nurss/nurss_limit_mesh.hpp"
 #include "analysis/nurss/nurss_storage.hpp"
 #include "analysis/nurss/refine_nurss.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "core/geometry_error.hpp"
 #include "core/knot_insertion.hpp"
 #include "formats/vrml/vrml_reader.hpp"

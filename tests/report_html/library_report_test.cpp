@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/report/library_report_html.hpp"
-#include "analysis/report/library_summary.hpp"
+#include "report/html/library_report_html.hpp"
+#include "report/library_summary.hpp"
 
 namespace cadnurbs {
 namespace {

@@ -3,21 +3,21 @@
 // not exist, failed with the reader's own message.
 //
 // The capping's record comes from real files: the sample's own text (the NURBS view and the NURBS
-// figures), and the scene tessellated at D = 1 mm (analysis/tessellate_to_deviation) written as X3D
+// figures), and the scene tessellated at D = 1 mm (analysis/tessellation/tessellate_to_deviation) written as X3D
 // classic IndexedFaceSets (the mesh view and figures). The storage curve holds that mesh's bytes at
-// D = 4, 2, 1, 0.5 and 0.25 mm; floats are the thesis's (analysis/storage_accounting).
+// D = 4, 2, 1, 0.5 and 0.25 mm; floats are the thesis's (report/storage_accounting).
 #include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
 #include <vector>
 
-#include "analysis/report/report_html.hpp"
-#include "analysis/report/storage_crossover.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/storage_accounting.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
-#include "analysis/weld_exact.hpp"
+#include "report/html/report_html.hpp"
+#include "report/storage_crossover.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "report/storage_accounting.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "core/bounding_box.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/common/gzip.hpp"

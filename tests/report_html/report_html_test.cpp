@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "analysis/report/reference_figures.hpp"
-#include "analysis/report/report_formats.hpp"
-#include "analysis/report/report_html.hpp"
+#include "report/reference_figures.hpp"
+#include "report/report_formats.hpp"
+#include "report/html/report_html.hpp"
 
 namespace cadnurbs {
 namespace {

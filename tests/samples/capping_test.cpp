@@ -3,7 +3,7 @@
 #include <map>
 #include <random>
 
-#include "analysis/tessellate_uniform.hpp"
+#include "analysis/tessellation/tessellate_uniform.hpp"
 #include "core/bounding_box.hpp"
 #include "samples/capping_shapes.hpp"
 

@@ -3,7 +3,10 @@
 # samples and the corpus, copied into a temporary folder, as below) as 4 array tasks and a dependent
 # merge job; the merged report must be the report of the same batch run on one machine, byte for byte.
 #
-#   slurm_cluster_test.sh CADNURBS SOURCE_DIR CORPUS_DIR
+#   slurm_cluster_test.sh CADNURBS SOURCE_DIR CORPUS_DIR [--smoke]
+#
+# --smoke: the fast tier's form: two sample cappings' STEP files (post, end) and the one sample that is no part
+# (the PROTO library, which fails), as 2 array tasks.
 #
 # The cluster: munged with its own key and socket; slurmctld and slurmd in the foreground with a
 # generated slurm.conf (proctrack/linuxproc, task/none, select/cons_tres, the node as `slurmd -C` sees it,
@@ -18,6 +21,10 @@ set -uo pipefail
 cadnurbs=$(realpath "$1")
 source_dir=$2
 corpus_dir=$3
+smoke=${4:-}
+[ -z "$smoke" ] || [ "$smoke" = --smoke ] || { echo "slurm_cluster_test: unknown option $smoke" >&2; exit 2; }
+tasks=4
+[ -n "$smoke" ] && tasks=2
 fail() { echo "slurm_cluster_test: $*" >&2; exit 1; }
 [ "$(id -u)" -eq 0 ] || fail "needs root (munged, slurmctld and slurmd run as root here)"
 for tool in munged slurmctld slurmd sbatch squeue scontrol sinfo; do
@@ -99,10 +106,16 @@ done
 
 # The library: samples and corpus side by side, as a user's folder would hold them.
 mkdir -p "$work/lib"
-cp -r "$source_dir/samples" "$work/lib/samples"
-while IFS= read -r -d '' file; do
-  mkdir -p "$work/lib/corpus/$(dirname "$file")" && cp "$corpus_dir/$file" "$work/lib/corpus/$file" || die "cannot copy $file"
-done < <(cd "$corpus_dir" && find . -type f -size -100k -print0)
+if [ -n "$smoke" ]; then
+  mkdir -p "$work/lib/samples"
+  cp "$source_dir"/samples/capping-post.step "$source_dir"/samples/capping-end.step \
+     "$source_dir/samples/cadnurbs-nurbs-protos.wrl" "$work/lib/samples/"
+else
+  cp -r "$source_dir/samples" "$work/lib/samples"
+  while IFS= read -r -d '' file; do
+    mkdir -p "$work/lib/corpus/$(dirname "$file")" && cp "$corpus_dir/$file" "$work/lib/corpus/$file" || die "cannot copy $file"
+  done < <(cd "$corpus_dir" && find . -type f -size -100k -print0)
+fi
 options=(--inputs step,iges,3dm,wrl,x3d,x3dv --to x3dv --deviation 0.5)
 
 # The same batch on one machine, for comparison.
@@ -110,7 +123,7 @@ options=(--inputs step,iges,3dm,wrl,x3d,x3dv --to x3dv --deviation 0.5)
 single_status=$?
 [ "$single_status" -eq 0 ] || [ "$single_status" -eq 3 ] || die "the single-machine batch exited $single_status"
 
-jobs_line=$(CADNURBS="$cadnurbs" "$source_dir/contrib/slurm/submit.sh" 4 "$work/lib" "$work/out" "${options[@]}") \
+jobs_line=$(CADNURBS="$cadnurbs" "$source_dir/contrib/slurm/submit.sh" "$tasks" "$work/lib" "$work/out" "${options[@]}") \
   || die "submit.sh failed: $jobs_line"
 [[ "$jobs_line" =~ ^array\ job\ ([0-9]+),\ merge\ job\ ([0-9]+)$ ]] || die "submit.sh said: $jobs_line"
 array=${BASH_REMATCH[1]}
@@ -123,11 +136,11 @@ done
   || die "the jobs did not end within 10 minutes"
 
 # Every array task and the merge ran to their end, on this cluster.
-for task in 0 1 2 3; do
+for task in $(seq 0 $((tasks - 1))); do
   state=$(scontrol show job -o "${array}_$task" | grep -o 'JobState=[A-Z]*')
   [ "$state" = JobState=COMPLETED ] || die "array task $task: $state"
   for ext in md json csv; do
-    [ -s "$work/out/report-$task-of-4.$ext" ] || die "array task $task left no report-$task-of-4.$ext"
+    [ -s "$work/out/report-$task-of-$tasks.$ext" ] || die "array task $task left no report-$task-of-$tasks.$ext"
   done
 done
 merge_info=$(scontrol show job -o "$merge")
@@ -143,9 +156,9 @@ parts=$(find "$work/lib" -type f \( -iname '*.step' -o -iname '*.stp' -o -iname 
 reported=$(python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["parts"]))' "$work/out/report.json")
 [ "$parts" -eq "$reported" ] || die "$parts parts in the library, $reported in the merged report"
 shard_sum=0
-for task in 0 1 2 3; do
-  n=$(python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["parts"]))' "$work/out/report-$task-of-4.json")
+for task in $(seq 0 $((tasks - 1))); do
+  n=$(python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["parts"]))' "$work/out/report-$task-of-$tasks.json")
   shard_sum=$((shard_sum + n))
 done
 [ "$shard_sum" -eq "$parts" ] || die "the shards' reports hold $shard_sum parts, the library $parts"
-echo "slurm_cluster_test: $parts parts, 4 array tasks ($array) and the merge ($merge) on Slurm; merged report = single-machine report"
+echo "slurm_cluster_test: $parts parts, $tasks array tasks ($array) and the merge ($merge) on Slurm; merged report = single-machine report"

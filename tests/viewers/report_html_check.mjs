@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// Opens a cadnurbs HTML report (analysis/report/report_html.hpp) from its file in headless Chromium and
+// Opens a cadnurbs HTML report (report/html/report_html.hpp) from its file in headless Chromium and
 // checks that it works offline and draws what it should:
 //
 //   report_html_check.mjs PAGE.html [--out DIR] [--bars N] [--curves N] [--views N]

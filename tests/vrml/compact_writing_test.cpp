@@ -6,7 +6,7 @@
 #include <tuple>
 
 #include "core/bounding_box.hpp"
-#include "analysis/tessellation_hints.hpp"
+#include "analysis/tessellation/plan_tessellation_hints.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 #include "formats/vrml/vrml_writer.hpp"
 #include "scene_comparison.hpp"
@@ -129,19 +129,19 @@ TEST(CompactWriting, PolygonsAreOneFlatShadedFaceSetAndReadBackAsTheirFans) {
 namespace cadnurbs {
 namespace {
 
-// uTessellation / vTessellation / tessellation as analysis/tessellation_hints computes them for the
+// uTessellation / vTessellation / tessellation as analysis/tessellation/plan_tessellation_hints computes them for the
 // display deviation, in the surface's node of either dialect (VRML97: NurbsSurface), and none at 0.
 TEST(CompactWriting, TessellationHintsAreWrittenForTheDisplayDeviation) {
   TrimmedSurface face = vrml_test::trimmed_plate();
   face.surface = vrml_test::quarter_cylinder();
   const Scene scene = vrml_test::single_shape_scene(face, "");
   const double d = 1e-4 * scene_bounding_box(scene).diagonal().norm();
-  const TessellationHints expected = tessellation_hints(face, d);
+  const TessellationHints expected = plan_tessellation_hints(face, d);
   ASSERT_GT(expected.u + expected.v, 0);  // the viewers' default is too coarse at this deviation
   for (auto encoding : {VrmlEncoding::vrml97, VrmlEncoding::x3d_classic, VrmlEncoding::x3d_xml}) {
     VrmlWriteOptions options = with_encoding(encoding);
     options.display_deviation = d;
-    options.tessellation_hints = &tessellation_hints;
+    options.tessellation_hints = &plan_tessellation_hints;
     const std::string text = format_vrml(scene, options);
     const bool xml = encoding == VrmlEncoding::x3d_xml;
     auto field = [&](const std::string& name, int value) {

@@ -7,12 +7,12 @@
 #include <cstdio>
 #include <map>
 
-#include "analysis/count_boundary_edges.hpp"
-#include "analysis/measure_deviation.hpp"
-#include "analysis/scene_area.hpp"
-#include "analysis/scene_triangles.hpp"
-#include "analysis/tessellate_to_deviation.hpp"
-#include "analysis/weld_exact.hpp"
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/measure/measure_deviation.hpp"
+#include "analysis/measure/scene_area.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "core/bounding_box.hpp"
 #include "formats/3dm/rhino_scene.hpp"
 #include "tests/brep/closed_solid.hpp"

@@ -1,0 +1,419 @@
+#include "analysis/tessellation/plan_tessellation_hints.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "analysis/eval/surface_deviation_bound.hpp"
+#include "core/bezier_extraction.hpp"
+#include "core/knot_insertion.hpp"
+#include "core/knot_vector.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+Eigen::Vector4d homogeneous(const Eigen::Vector3d& p, double w) { return {w * p.x(), w * p.y(), w * p.z(), w}; }
+
+// Control-net bounds tighten as the pieces shrink (the net converges to the surface): every knot span
+// of a curved direction is split into this many equal pieces first (the shape does not change). 8
+// brings the bounds within ~1.3x of the true second derivatives on circles and tori.
+constexpr int kRefinement = 8;
+
+std::vector<double> split_points(const std::vector<double>& knots, int order, int count) {
+  std::vector<double> out;
+  for (int i = order - 1; i < count; ++i) {
+    const double a = knots[i], b = knots[i + 1];
+    if (b > a)
+      for (int k = 1; k < kRefinement; ++k) out.push_back(a + (b - a) * k / kRefinement);
+  }
+  return out;
+}
+
+NurbsSurface refined(const NurbsSurface& s) {
+  NurbsSurface out = s;
+  if (out.u_order > 2) out = refine_knots(out, SurfaceDirection::u, split_points(out.u_knots, out.u_order, out.u_count));
+  if (out.v_order > 2) out = refine_knots(out, SurfaceDirection::v, split_points(out.v_knots, out.v_order, out.v_count));
+  return out;
+}
+
+NurbsCurve refined(const NurbsCurve& c) {
+  return c.order > 2 ? refine_knots(c, split_points(c.knots, c.order, c.count())) : c;
+}
+
+// Tensor-product Bernstein polynomial of degree (m, n) on one piece (a curve: n = 0), coefficients
+// u fastest. The rational derivatives below are written over a common denominator W^k as one
+// polynomial numerator, so terms that cancel in the true derivative (S_uv of a cylinder) cancel in
+// the coefficients too; |numerator| <= its largest coefficient (convex hull), W >= smallest weight.
+template <class T>
+struct Bernstein {
+  int m = 0, n = 0;
+  std::vector<T> c;
+  Bernstein(int m_, int n_, const T& zero) : m(m_), n(n_), c((m_ + 1) * (n_ + 1), zero) {}
+  T& at(int i, int j) { return c[i + j * (m + 1)]; }
+  const T& at(int i, int j) const { return c[i + j * (m + 1)]; }
+};
+
+double binomial(int n, int k) {
+  double r = 1;
+  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+  return r;
+}
+
+// d/du (dv: along v) in the global parameter, the piece spanning `span`.
+template <class T>
+Bernstein<T> derivative(const Bernstein<T>& a, bool along_u, double span) {
+  const T zero = T(a.c[0] - a.c[0]);
+  if ((along_u ? a.m : a.n) == 0) return Bernstein<T>(a.m, a.n, zero);
+  Bernstein<T> d(a.m - (along_u ? 1 : 0), a.n - (along_u ? 0 : 1), zero);
+  const double f = (along_u ? a.m : a.n) / span;
+  for (int j = 0; j <= d.n; ++j)
+    for (int i = 0; i <= d.m; ++i) d.at(i, j) = f * (along_u ? a.at(i + 1, j) - a.at(i, j) : a.at(i, j + 1) - a.at(i, j));
+  return d;
+}
+
+template <class R, class A, class B>
+Bernstein<R> product_as(const Bernstein<A>& a, const Bernstein<B>& b, const R& zero) {
+  Bernstein<R> out(a.m + b.m, a.n + b.n, zero);
+  for (int j1 = 0; j1 <= a.n; ++j1)
+    for (int i1 = 0; i1 <= a.m; ++i1)
+      for (int j2 = 0; j2 <= b.n; ++j2)
+        for (int i2 = 0; i2 <= b.m; ++i2) {
+          const double f = binomial(a.m, i1) * binomial(b.m, i2) / binomial(a.m + b.m, i1 + i2) * binomial(a.n, j1) *
+                           binomial(b.n, j2) / binomial(a.n + b.n, j1 + j2);
+          out.at(i1 + i2, j1 + j2) += R(f * (a.at(i1, j1) * b.at(i2, j2)));
+        }
+  return out;
+}
+Bernstein<Eigen::Vector3d> product(const Bernstein<Eigen::Vector3d>& a, const Bernstein<double>& b) {
+  return product_as(a, b, Eigen::Vector3d(Eigen::Vector3d::Zero()));
+}
+
+// The same polynomial at degree (m, n) >= its own (degree elevation, one step at a time).
+template <class T>
+Bernstein<T> elevated(Bernstein<T> a, int m, int n) {
+  while (a.m < m) {
+    Bernstein<T> e(a.m + 1, a.n, T(a.c[0] - a.c[0]));
+    for (int j = 0; j <= a.n; ++j)
+      for (int i = 0; i <= e.m; ++i) {
+        const double f = static_cast<double>(i) / e.m;
+        e.at(i, j) = T((i > 0 ? f * a.at(i - 1, j) : T(0 * a.at(0, j))) + (i < e.m ? (1 - f) * a.at(i, j) : T(0 * a.at(0, j))));
+      }
+    a = e;
+  }
+  while (a.n < n) {
+    Bernstein<T> e(a.m, a.n + 1, T(a.c[0] - a.c[0]));
+    for (int j = 0; j <= e.n; ++j)
+      for (int i = 0; i <= a.m; ++i) {
+        const double f = static_cast<double>(j) / e.n;
+        e.at(i, j) = T((j > 0 ? f * a.at(i, j - 1) : T(0 * a.at(i, 0))) + (j < e.n ? (1 - f) * a.at(i, j) : T(0 * a.at(i, 0))));
+      }
+    a = e;
+  }
+  return a;
+}
+
+// Sum and difference at the larger of the two degrees (a zero derivative keeps its parent's degree).
+template <class T>
+Bernstein<T> combined(const Bernstein<T>& a, const Bernstein<T>& b, double sign) {
+  const int m = std::max(a.m, b.m), n = std::max(a.n, b.n);
+  Bernstein<T> r = elevated(a, m, n);
+  const Bernstein<T> e = elevated(b, m, n);
+  for (size_t k = 0; k < r.c.size(); ++k) r.c[k] = T(r.c[k] + sign * e.c[k]);
+  return r;
+}
+template <class T>
+Bernstein<T> operator-(const Bernstein<T>& a, const Bernstein<T>& b) { return combined(a, b, -1.0); }
+template <class T>
+Bernstein<T> operator+(const Bernstein<T>& a, const Bernstein<T>& b) { return combined(a, b, 1.0); }
+Bernstein<Eigen::Vector3d> operator*(const Bernstein<double>& a, const Bernstein<Eigen::Vector3d>& b) { return product(b, a); }
+
+Bernstein<Eigen::Vector3d> operator*(double f, Bernstein<Eigen::Vector3d> a) {
+  for (auto& v : a.c) v *= f;
+  return a;
+}
+
+double largest(const Bernstein<Eigen::Vector3d>& a) {
+  double r = 0;
+  for (const auto& v : a.c) r = std::max(r, v.norm());
+  return r;
+}
+
+// Bounds on one rational Bézier piece (G = w (P - c), W = w): first derivatives
+// S_u = (G_u W - G W_u) / W^2, and second S_uu = ((G_uu W - G W_uu) W - 2 W_u (G_u W - G W_u)) / W^3,
+// S_uv = ((G_uv W + G_u W_v - G_v W_u - G W_uv) W - 2 W_v (G_u W - G W_u)) / W^3.
+struct PieceBounds {
+  double su = 0, sv = 0;
+  SecondDerivativeBound m;
+};
+
+PieceBounds piece_bounds(const Bernstein<Eigen::Vector3d>& g, const Bernstein<double>& w, double du, double dv) {
+  PieceBounds out;
+  double w_min = std::numeric_limits<double>::infinity();
+  for (const double x : w.c) w_min = std::min(w_min, x);
+  const auto gu = derivative(g, true, du), gv = derivative(g, false, dv);
+  const auto wu = derivative(w, true, du), wv = derivative(w, false, dv);
+  const auto a_u = product(gu, w) - product(g, wu);  // S_u W^2
+  const auto a_v = product(gv, w) - product(g, wv);
+  out.su = largest(a_u) / (w_min * w_min);
+  out.sv = largest(a_v) / (w_min * w_min);
+  const auto guu = derivative(gu, true, du), guv = derivative(gu, false, dv), gvv = derivative(gv, false, dv);
+  const auto wuu = derivative(wu, true, du), wuv = derivative(wu, false, dv), wvv = derivative(wv, false, dv);
+  const double w3 = w_min * w_min * w_min;
+  out.m.uu = largest(product(product(guu, w) - product(g, wuu), w) - 2.0 * (wu * a_u)) / w3;
+  out.m.vv = largest(product(product(gvv, w) - product(g, wvv), w) - 2.0 * (wv * a_v)) / w3;
+  out.m.uv =
+      largest(product(product(guv, w) + product(gu, wv) - product(gv, wu) - product(g, wuv), w) - 2.0 * (wv * a_u)) / w3;
+  return out;
+}
+
+PieceBounds patch_bounds(const NurbsSurface& patch) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const auto& q : patch.points) c += q;
+  c /= static_cast<double>(patch.points.size());
+  Bernstein<Eigen::Vector3d> g(patch.u_order - 1, patch.v_order - 1, Eigen::Vector3d::Zero());
+  Bernstein<double> w(patch.u_order - 1, patch.v_order - 1, 0.0);
+  for (int j = 0; j < patch.v_order; ++j)
+    for (int i = 0; i < patch.u_order; ++i) {
+      w.at(i, j) = patch.weight(i, j);
+      g.at(i, j) = patch.weight(i, j) * (patch.point(i, j) - c);
+    }
+  return piece_bounds(g, w, patch.u_end() - patch.u_start(), patch.v_end() - patch.v_start());
+}
+
+PieceBounds segment_bounds(const NurbsCurve& segment) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const auto& q : segment.points) c += q;
+  c /= static_cast<double>(segment.points.size());
+  Bernstein<Eigen::Vector3d> g(segment.order - 1, 0, Eigen::Vector3d::Zero());
+  Bernstein<double> w(segment.order - 1, 0, 0.0);
+  for (int i = 0; i < segment.order; ++i) {
+    w.at(i, 0) = segment.weight(i);
+    g.at(i, 0) = segment.weight(i) * (segment.points[i] - c);
+  }
+  return piece_bounds(g, w, segment.domain_end() - segment.domain_start(), 1.0);
+}
+
+
+// A C0 line (or point) of the parametrisation and the bound on the jump of the first derivative there.
+struct Kink {
+  double at = 0.0;
+  double jump = 0.0;
+};
+
+// The kinks in u of `surface`: interior knots of multiplicity >= degree. Per v-span the jump of S_u
+// across the line is (dG W - dW G) / W^2 along it, dG, dW the difference of the homogeneous
+// derivatives from the control rows on both sides (Bézier form): bounded by its numerator's largest
+// coefficient, exactly 0 where the parametrisation is C1 after all (the arcs of a rational circle).
+std::vector<Kink> surface_kinks_u(const NurbsSurface& surface, const std::vector<NurbsSurface>& patches,
+                                  const SurfaceDeviationBound& bound) {
+  std::vector<Kink> out;
+  const int columns = static_cast<int>(bound.u_breaks.size()) - 1, rows = static_cast<int>(bound.v_breaks.size()) - 1;
+  const int p = surface.u_order - 1;
+  if (p < 1) return out;
+  for (const double k : bound.c0_u) {
+    const int i = static_cast<int>(std::lower_bound(bound.u_breaks.begin(), bound.u_breaks.end(), k) - bound.u_breaks.begin());
+    if (i <= 0 || i >= columns) continue;
+    Kink kink{k, 0.0};
+    for (int j = 0; j < rows; ++j) {
+      const NurbsSurface& left = patches[(i - 1) + j * columns];
+      const NurbsSurface& right = patches[i + j * columns];
+      const double dl = left.u_end() - left.u_start(), dr = right.u_end() - right.u_start();
+      // along the line (Bézier in v): G = w (P - c), W = w of the shared row, dG, dW the homogeneous
+      // derivative difference across it; jump = (dG W - dW G) / W^2 (dG taken relative to c too)
+      const int q = right.v_order - 1;
+      Eigen::Vector3d c = Eigen::Vector3d::Zero();
+      for (int l = 0; l <= q; ++l) c += right.point(0, l);
+      c /= q + 1;
+      Bernstein<Eigen::Vector3d> g(q, 0, Eigen::Vector3d::Zero()), dg(q, 0, Eigen::Vector3d::Zero());
+      Bernstein<double> w(q, 0, 0.0), dw(q, 0, 0.0);
+      double w_min = std::numeric_limits<double>::infinity();
+      for (int l = 0; l <= q; ++l) {
+        const Eigen::Vector4d d_right =
+            p / dr * (homogeneous(right.point(1, l), right.weight(1, l)) - homogeneous(right.point(0, l), right.weight(0, l)));
+        const Eigen::Vector4d d_left = p / dl * (homogeneous(left.point(p, l), left.weight(p, l)) -
+                                                 homogeneous(left.point(p - 1, l), left.weight(p - 1, l)));
+        const Eigen::Vector4d d = d_right - d_left;
+        w.at(l, 0) = right.weight(0, l);
+        g.at(l, 0) = right.weight(0, l) * (right.point(0, l) - c);
+        dw.at(l, 0) = d[3];
+        dg.at(l, 0) = d.head<3>() - d[3] * c;
+        w_min = std::min(w_min, right.weight(0, l));
+      }
+      kink.jump = std::max(kink.jump, largest(product(dg, w) - product(g, dw)) / (w_min * w_min));
+    }
+    if (kink.jump > 0.0) out.push_back(kink);
+  }
+  return out;
+}
+
+// The same surface with u and v exchanged (so one function serves both directions).
+NurbsSurface transposed(const NurbsSurface& s) {
+  NurbsSurface t;
+  t.u_order = s.v_order, t.v_order = s.u_order, t.u_count = s.v_count, t.v_count = s.u_count;
+  t.u_knots = s.v_knots, t.v_knots = s.u_knots;
+  t.points.resize(s.points.size());
+  if (s.is_rational()) t.weights.resize(s.weights.size());
+  for (int j = 0; j < s.v_count; ++j)
+    for (int i = 0; i < s.u_count; ++i) {
+      t.points[t.index(j, i)] = s.point(i, j);
+      if (s.is_rational()) t.weights[t.index(j, i)] = s.weight(i, j);
+    }
+  return t;
+}
+
+// Largest kink jump among the kinks strictly inside a cell of the uniform grid of n steps on [a, b]
+// (a kink on a grid line is never straddled).
+double straddled_jump(const std::vector<Kink>& kinks, double a, double b, int n) {
+  double jump = 0.0;
+  const double h = (b - a) / n;
+  for (const auto& k : kinks) {
+    const double steps = (k.at - a) / h;
+    if (std::abs(steps - std::round(steps)) > 1e-9 * std::max(1.0, std::abs(steps))) jump = std::max(jump, k.jump);
+  }
+  return jump;
+}
+
+struct SurfaceModel {
+  double du = 0, dv = 0, u0 = 0, v0 = 0;
+  SecondDerivativeBound m;
+  std::vector<Kink> kinks_u, kinks_v;
+
+  double deviation(int nu, int nv) const {
+    const double hu = du / nu, hv = dv / nv;
+    return 0.125 * (hu * hu * m.uu + 2 * hu * hv * m.uv + hv * hv * m.vv) +
+           0.25 * hu * straddled_jump(kinks_u, u0, u0 + du, nu) + 0.25 * hv * straddled_jump(kinks_v, v0, v0 + dv, nv);
+  }
+};
+
+SurfaceModel surface_model(const NurbsSurface& given) {
+  const NurbsSurface surface = refined(given);
+  SurfaceModel model;
+  model.u0 = surface.u_start(), model.v0 = surface.v_start();
+  model.du = surface.u_end() - model.u0, model.dv = surface.v_end() - model.v0;
+  const SurfaceDeviationBound bound = surface_deviation_bound(surface);  // its breaks and C0 lines
+  for (const auto& patch : bezier_patches(surface)) {
+    const SecondDerivativeBound b = patch_bounds(patch).m;
+    model.m.uu = std::max(model.m.uu, b.uu);
+    model.m.uv = std::max(model.m.uv, b.uv);
+    model.m.vv = std::max(model.m.vv, b.vv);
+  }
+  if (!bound.c0_u.empty()) model.kinks_u = surface_kinks_u(surface, bezier_patches(surface), bound);
+  if (!bound.c0_v.empty()) {
+    const NurbsSurface t = transposed(surface);
+    model.kinks_v = surface_kinks_u(t, bezier_patches(t), surface_deviation_bound(t));
+  }
+  return model;
+}
+
+// Second-derivative bound of a 2D/3D curve per Bézier segment, and its kinks (exact jumps: the curve
+// passes through one point there).
+struct CurveModel {
+  double a = 0, b = 0, m2 = 0;
+  std::vector<Kink> kinks;
+
+  double deviation(int n) const {
+    const double h = (b - a) / n;
+    return 0.125 * h * h * m2 + 0.25 * h * straddled_jump(kinks, a, b, n);
+  }
+};
+
+CurveModel curve_model(const NurbsCurve& given) {
+  const NurbsCurve curve = refined(given);
+  CurveModel model;
+  model.a = curve.domain_start(), model.b = curve.domain_end();
+  const int p = curve.degree();
+  const auto segments = bezier_segments(curve);
+  for (const auto& seg : segments) model.m2 = std::max(model.m2, segment_bounds(seg).m.uu);
+  // Only where the curve is C0 (multiplicity >= degree): elsewhere the pieces join with C1.
+  const std::vector<double> corners = c0_knots(curve.knots, curve.order, curve.count());
+  for (size_t s = 0; s + 1 < segments.size(); ++s) {
+    const NurbsCurve& left = segments[s];
+    const NurbsCurve& right = segments[s + 1];
+    const double k = left.domain_end();
+    if (!std::binary_search(corners.begin(), corners.end(), k)) continue;
+    const Eigen::Vector4d dl = p / (left.domain_end() - left.domain_start()) *
+                               (homogeneous(left.points[p], left.weight(p)) - homogeneous(left.points[p - 1], left.weight(p - 1)));
+    const Eigen::Vector4d dr = p / (right.domain_end() - right.domain_start()) *
+                               (homogeneous(right.points[1], right.weight(1)) - homogeneous(right.points[0], right.weight(0)));
+    const Eigen::Vector4d d = dr - dl;
+    const double jump = (d.head<3>() - d[3] * right.points[0]).norm() / right.weight(0);
+    if (jump > 1e-12 * (1.0 + right.points[0].norm())) model.kinks.push_back({k, jump});
+  }
+  return model;
+}
+
+// The smallest n in [1, cap] with deviation(n) <= target; cap when none.
+template <class Deviation>
+int smallest_count(Deviation deviation, double target, int cap) {
+  for (int n = 1; n <= cap; ++n)
+    if (deviation(n) <= target) return n;
+  return cap;
+}
+
+// Bound on |S_u| and |S_v| over the surface.
+double surface_first_derivative_bound(const NurbsSurface& given) {
+  double bound = 0.0;
+  for (const auto& patch : bezier_patches(refined(given))) {
+    const PieceBounds b = patch_bounds(patch);
+    bound = std::max({bound, b.su, b.sv});
+  }
+  return bound;
+}
+
+}  // namespace
+
+double uniform_chord_deviation_bound(const NurbsCurve& curve, int n) { return curve_model(curve).deviation(std::max(1, n)); }
+
+TessellationHints plan_tessellation_hints(const TrimmedSurface& face, double deviation) {
+  if (!(deviation > 0.0) || !std::isfinite(deviation))
+    throw std::invalid_argument("plan_tessellation_hints: deviation must be positive and finite");
+  TessellationHints hints;
+  const NurbsSurface& s = face.surface;
+  const SurfaceModel model = surface_model(s);
+  const int def_u = 2 * s.u_count, def_v = 2 * s.v_count;
+  if (model.deviation(def_u, def_v) > deviation) {
+    const int cap = kMaxSurfaceTessellation;
+    int best_u = cap, best_v = cap;
+    long best = std::numeric_limits<long>::max();
+    for (int nu = 1; nu <= cap; ++nu) {
+      const int nv = smallest_count([&](int n) { return model.deviation(nu, n); }, deviation, cap);
+      if (model.deviation(nu, nv) > deviation) continue;
+      const long cells = static_cast<long>(nu) * nv;
+      if (cells < best || (cells == best && nu + nv < best_u + best_v)) best = cells, best_u = nu, best_v = nv;
+    }
+    if (best == std::numeric_limits<long>::max()) {
+      // Out of reach within the cap: the cap where it helps, the fewest steps where it does not.
+      const double at_cap = model.deviation(cap, cap);
+      best_u = smallest_count([&](int n) { return model.deviation(n, cap); }, at_cap * (1 + 1e-12), cap);
+      best_v = smallest_count([&](int n) { return model.deviation(best_u, n); }, at_cap * (1 + 1e-12), cap);
+    }
+    hints.u = best_u == def_u ? 0 : best_u;
+    hints.v = best_v == def_v ? 0 : best_v;
+  }
+  // Trimming chords: (u,v) error e moves the surface point by <= sqrt(2) L |e|.
+  const double l = surface_first_derivative_bound(s);
+  const double uv_target = l > 0.0 ? deviation / (std::sqrt(2.0) * l) : std::numeric_limits<double>::infinity();
+  for (const auto& loop : face.loops) {
+    std::vector<int> counts;
+    for (const auto& segment : loop.segments) {
+      const auto* curve = std::get_if<NurbsCurve>(&segment);
+      if (!curve) {
+        counts.push_back(0);
+        continue;
+      }
+      const CurveModel cm = curve_model(*curve);
+      if (cm.deviation(2 * curve->count()) <= uv_target) {
+        counts.push_back(0);
+        continue;
+      }
+      const int n = smallest_count([&](int k) { return cm.deviation(k); }, uv_target, kMaxTrimTessellation);
+      counts.push_back(n == 2 * curve->count() ? 0 : n);
+    }
+    hints.trim_segments.push_back(std::move(counts));
+  }
+  return hints;
+}
+
+}  // namespace cadnurbs

@@ -1,0 +1,132 @@
+#include "converters/conversion.hpp"
+
+#include <filesystem>
+
+#include "analysis/tessellation/tessellate_uniform.hpp"
+#include "converters/arguments.hpp"
+#include "core/bounding_box.hpp"
+#include "core/number_format.hpp"
+#include "formats/common/file_io.hpp"
+#include "formats/vrml/viewpoint.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+// The share of D a quantising format's mesh is tessellated to (the rest is the quantisation's).
+constexpr double kTessellationShare = 0.7;
+
+// A NURBS format that quantises (.cnb): --deviation is its bound, not a request for a mesh.
+bool quantises_nurbs(const FileFormat& format) { return format.quantises && !format.meshes_only; }
+
+// Takes the NURBS curves out of `node` and its children (a format that holds triangles only has no place
+// for them); returns how many.
+int drop_curves(SceneNode& node) {
+  const auto before = node.shapes.size();
+  std::erase_if(node.shapes, [](const Shape& shape) { return std::holds_alternative<NurbsCurve>(shape.geometry); });
+  int dropped = static_cast<int>(before - node.shapes.size());
+  for (auto& child : node.children) dropped += drop_curves(child);
+  return dropped;
+}
+
+template <class Function, class... Args>
+void tell(const Function& listener, const Args&... args) {
+  if (listener) listener(args...);
+}
+
+}  // namespace
+
+bool writes_mesh(const ConversionRequest& request, const FileFormat& output) {
+  return request.mesh || request.steps > 0 || (request.deviation > 0 && !quantises_nurbs(output)) ||
+         output.meshes_only;
+}
+
+void check_request(const ConversionRequest& request) {
+  const FileFormat& output = output_format(request.output);
+  if (request.compression && file_extension(request.output) != ".glb")
+    throw UsageError("--compress applies to .glb output only");
+  if (request.simplify > 0 && writes_mesh(request, output)) throw UsageError("--simplify applies to NURBS output only");
+}
+
+LoadedInput load_input(const ConversionRequest& request) {
+  const FileFormat& format = request.input_format ? *request.input_format : input_format(request.input);
+  LoadedInput input;
+  input.loaded = load_scene_as(request.input, format, request.read);
+  input.scene = request.unit ? in_unit(input.loaded.scene, *request.unit) : input.loaded.scene;
+  return input;
+}
+
+SceneWriteOptions scene_write_options(const ConversionRequest& request, const Scene& scene, double diagonal) {
+  SceneWriteOptions options;
+  options.homogeneous_control_points = request.read.homogeneous_control_points;
+  options.significant_digits = request.precision;
+  options.self_contained = request.self_contained;
+  options.pretty = request.pretty;
+  options.title = std::filesystem::path(request.input).filename().string();
+  if (request.compression) options.compression = *request.compression;
+  options.viewpoint = framing_viewpoint(scene_bounding_box(scene));
+  options.display_deviation = request.display_deviation >= 0 ? request.display_deviation : 1e-3 * diagonal;
+  if (quantises_nurbs(output_format(request.output)))
+    options.quantisation_budget =
+        request.deviation > 0 ? request.deviation : default_deviation(diagonal, request.input);
+  return options;
+}
+
+ConversionResult convert_loaded(const ConversionRequest& request, const LoadedInput& input, const ConversionLog& log) {
+  const FileFormat& format = output_format(request.output);
+  const Scene& scene = input.scene;
+  const double diagonal = checked_diagonal(scene, request.input);
+  const bool mesh = writes_mesh(request, format);
+  std::optional<Scene> simplified;
+  if (request.simplify > 0) {
+    SimplifiedScene s = simplified_scene(scene, request.simplify, written_tolerance(scene, request.precision));
+    tell(log.simplified, s);
+    if (s.certified_deviation > request.simplify)
+      throw FileError(request.input + ": --simplify " + number_text(request.simplify, 4) +
+                      ": the certified deviation " + number_text(s.certified_deviation, 4) + " exceeds it");
+    simplified = std::move(s.scene);
+  }
+  const Scene& source = simplified ? *simplified : scene;
+  SceneWriteOptions options = scene_write_options(request, scene, diagonal);
+  ConversionResult result;
+  Scene written;
+  if (mesh && request.steps > 0) {
+    written = tessellate_uniform(scene, request.steps);
+    result.steps = request.steps;
+  } else if (mesh) {
+    ConversionResult::Mesh m;
+    m.deviation = request.deviation > 0 ? request.deviation : default_deviation(diagonal, request.input);
+    m.check_areas = request.check_areas;
+    // A quantising writer gets its share of D: the mesh at 0.7 D, vertices moved by at most 0.3 D.
+    m.quantised = format.quantises;
+    m.tessellated = format.quantises ? kTessellationShare * m.deviation : m.deviation;
+    if (format.quantises) options.quantisation_budget = m.deviation - m.tessellated;
+    m.quantisation_budget = options.quantisation_budget;
+    CertifiedMesh meshed = certified_mesh(input.loaded, scene, m.tessellated, request.check_areas);
+    if (meshed.sewn) tell(log.sewn, meshed);
+    m.report = meshed.report;
+    written = std::move(meshed.meshes);
+    result.mesh = m;
+  } else if (format.compact && !request.exact_nurbs) {
+    CompactReport report;
+    written = compact_scene(source, written_tolerance(scene, request.precision), &report);
+    tell(log.compacted, report);
+  } else {
+    written = source;
+  }
+  if (format.meshes_only) {
+    const int curves = drop_curves(written.root);
+    if (curves > 0) tell(log.curves_dropped, curves);
+  }
+  write_scene(request.output, written, options);
+  result.counts = count_entities(written);
+  return result;
+}
+
+ConversionResult convert_file(const ConversionRequest& request, const ConversionLog& log) {
+  const LoadedInput input = load_input(request);
+  tell(log.loaded, input.loaded);
+  return convert_loaded(request, input, log);
+}
+
+}  // namespace cadnurbs

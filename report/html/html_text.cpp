@@ -1,0 +1,77 @@
+#include "report/html/html_text.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "report/html/report_html_assets.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+bool contains_ignoring_case(const std::string& text, const std::string& lower_needle) {
+  const auto found = std::search(text.begin(), text.end(), lower_needle.begin(), lower_needle.end(),
+                                 [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
+  return found != text.end();
+}
+
+}  // namespace
+
+const char* const base_page_style = R"css(
+body { font-family: sans-serif; margin: 1.5em auto; max-width: 1100px; padding: 0 1em; color: #222; background: #fff; }
+h1 { font-size: 1.6em; } h2 { font-size: 1.25em; margin-top: 2em; border-bottom: 1px solid #ccc; }
+table { border-collapse: collapse; margin: 0.8em 0; font-size: 0.9em; }
+th, td { border: 1px solid #ccc; padding: 0.25em 0.5em; text-align: left; vertical-align: top; }
+td.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+footer { margin-top: 3em; color: #555; font-size: 0.8em; }
+footer pre { white-space: pre-wrap; max-height: 20em; overflow: auto; }
+)css";
+
+std::string escape_html(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string script_json(const std::string& json) {
+  std::string out;
+  out.reserve(json.size());
+  for (char c : json) {
+    if (c == '<')
+      out += "\\u003c";
+    else
+      out += c;
+  }
+  return out;
+}
+
+std::string json_string(const std::string& text) {
+  return nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+const std::string& inline_script(const std::string& asset) {
+  const std::string& text = report_html_asset(asset);
+  if (contains_ignoring_case(text, "</script") || text.find("<!--") != std::string::npos)
+    throw std::runtime_error("HTML report: " + asset + " contains </script or <!-- and cannot be inlined");
+  return text;
+}
+
+std::string grouped(long value) {
+  std::string digits = std::to_string(value < 0 ? -value : value);
+  for (int at = int(digits.size()) - 3; at > 0; at -= 3) digits.insert(std::size_t(at), "\u202f");
+  return value < 0 ? "-" + digits : digits;
+}
+
+}  // namespace cadnurbs
