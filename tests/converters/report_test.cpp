@@ -135,7 +135,9 @@ TEST_F(Report, SimplifyAddsTheSimplifiedNurbsNextToTheSourceNurbs) {
   EXPECT_GT(simplified["deviation"].get<double>(), 0.0);  // certified by measuring, not assumed
   EXPECT_LE(simplified["deviation"].get<double>(), 0.15);
   EXPECT_LT(simplified["floats"].get<long>(), compact["floats"].get<long>());
-  EXPECT_LT(simplified["bytes"].get<long>(), compact["bytes"].get<long>());
+  // Bytes are not compared: the report measures convert's files, display hints included, and a face
+  // with fewer control points may need a hint the source did not (dm1: 27 floats fewer, two hint
+  // fields more, 6 bytes more). Simplify_cli_test compares the bytes without hints.
   const CommandResult usage = run("report " + step + " --simplify 0");
   EXPECT_EQ(usage.status, 2);
   EXPECT_EQ(usage.err, "cadnurbs report: --simplify must be a positive number of millimetres\n");
