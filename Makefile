@@ -11,12 +11,16 @@ setup:
 	bash scripts/setup.sh
 
 configure: setup
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCADNURBS_TESTS=ON
 
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-demo: configure
+# The demo installs and configures only what the command needs; a build folder that already exists
+# keeps its configuration (the tests stay on after `make test`, and `make test` turns them on).
+demo:
+	bash scripts/setup.sh demo
+	test -f $(BUILD)/CMakeCache.txt || cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCADNURBS_TESTS=OFF
 	cmake --build $(BUILD) -j $(JOBS) --target cadnurbs
 	$(BUILD)/converters/cadnurbs demo -o $(BUILD)/demo
 

@@ -1,22 +1,33 @@
 #!/usr/bin/env bash
-# Installs everything cadnurbs needs on Debian 12, skipping what is already there.
+# setup.sh [demo]: installs what cadnurbs needs on Debian 12, skipping what is already there. With
+# `demo`, only what building and running the cadnurbs command needs (what `make demo` uses); without,
+# the tests' tools too (viewers, Chromium, clang for the fuzz targets, Slurm, the npm test drivers).
 # Run as root (or with sudo available). Idempotent.
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")/.." && pwd)
+scope=${1:-all}
+case "$scope" in
+  demo | all) ;;
+  *) echo "setup.sh: unknown scope '$scope' (demo, or nothing for everything)" >&2; exit 2 ;;
+esac
 
 debian_packages=(
   build-essential cmake pkg-config git
   libeigen3-dev zlib1g-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev
   libcgal-dev libopenmesh-dev libdraco-dev libmeshoptimizer-dev libtinygltf-dev nlohmann-json3-dev libtbb-dev
-  view3dscene xvfb xauth chromium fonts-dejavu-core
-  clang libclang-rt-14-dev
-  python3
-  slurm-wlm munge
 )
+if [ "$scope" = all ]; then
+  debian_packages+=(
+    libgtest-dev libgmock-dev libbenchmark-dev
+    view3dscene xvfb xauth chromium fonts-dejavu-core
+    clang libclang-rt-14-dev
+    python3
+    slurm-wlm munge
+  )
+fi
 
 # node/npm may come from elsewhere than Debian; the packages only when the commands are missing.
 if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
@@ -26,7 +37,7 @@ fi
 
 # Viewer test drivers (x_ite, playwright-core), pinned by package-lock.json.
 viewer_dir="$here/tests/viewers"
-if [ -f "$viewer_dir/package-lock.json" ]; then
+if [ "$scope" = all ] && [ -f "$viewer_dir/package-lock.json" ]; then
   if [ ! -d "$viewer_dir/node_modules/x_ite" ] || [ ! -d "$viewer_dir/node_modules/playwright-core" ] \
      || [ "$viewer_dir/package-lock.json" -nt "$viewer_dir/node_modules/.package-lock.json" ]; then
     echo "setup: npm ci in tests/viewers"
@@ -38,7 +49,7 @@ fi
 
 # The .3dm test-file generator (rhino3dm), pinned by package-lock.json; the 3dm tests run it at test time.
 rhino3dm_dir="$here/tests/3dm/generate"
-if [ -f "$rhino3dm_dir/package-lock.json" ]; then
+if [ "$scope" = all ] && [ -f "$rhino3dm_dir/package-lock.json" ]; then
   if [ ! -d "$rhino3dm_dir/node_modules/rhino3dm" ] \
      || [ "$rhino3dm_dir/package-lock.json" -nt "$rhino3dm_dir/node_modules/.package-lock.json" ]; then
     echo "setup: npm ci in tests/3dm/generate"
