@@ -17,12 +17,12 @@ const CommandSpec& demo_command_spec() {
   static const CommandSpec spec = {
       "demo",
       "[-o DIR]",
-      "The main job on the bundled samples: generates every bundled stair capping as NURBS\n"
-      "(.wrl .x3dv .x3d) and as STL (thesis chord rule, 1 mm), and prints for each the counts the\n"
-      "thesis uses (seed 001, 6.1): control points, knots, and floats = 4 per control point (x, y, z,\n"
-      "w) + 1 per knot, against 3 floats per vertex of the triangle mesh. It ends with the storage\n"
-      "report of the cappings (cadnurbs report at D = 1 mm: bytes of files written and read back),\n"
-      "written to DIR/report.md, and prints its table. Default DIR: cadnurbs-demo.",
+      "The main job on the bundled samples: generates every bundled stair capping as NURBS (.wrl .x3dv\n"
+      ".x3d), as B-rep (.step .iges) and as STL (thesis chord rule, 1 mm), and prints for each the\n"
+      "counts the thesis uses (seed 001, 6.1): control points, knots, and floats = 4 per control point\n"
+      "(x, y, z, w) + 1 per knot, against 3 floats per vertex of the triangle mesh. It ends with the\n"
+      "storage report of the cappings (cadnurbs report at D = 1 mm: bytes of files written and read\n"
+      "back), written to DIR/report.md, and prints its table. Default DIR: cadnurbs-demo.",
       {{"output", "DIR", ""}},
       "",
   };
