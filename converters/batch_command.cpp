@@ -18,7 +18,9 @@ const CommandSpec& batch_command_spec() {
       "Converts every part under IN_DIR (a file named as an input format, or holding one when its name\n"
       "says nothing), each in a worker process of its own, N at a time, into OUT_DIR's mirror of IN_DIR:\n"
       "OUT_DIR/<part>.<ext> for each output and OUT_DIR/<part>.json, the part's record (the report's\n"
-      "schema, docs/report.md, plus a \"batch\" object: content hash, options, seconds). A part that fails,\n"
+      "schema, docs/report.md, plus a \"batch\" object: content hash, options, seconds). Each part is read\n"
+      "once; its record holds what converting it told: faces, repairs, fallbacks, each output's bytes raw\n"
+      "and gzip'd and its deviation bound; --measure adds the report's full comparison. A part that fails,\n"
       "crashes, hangs or runs out of memory is recorded with its reason and the batch goes on. A second\n"
       "run skips the parts whose record has the same content hash and options, except those that\n"
       "exceeded a time or memory limit, which it does again. Ends with the combined\n"
@@ -30,7 +32,10 @@ const CommandSpec& batch_command_spec() {
           {"inputs", "EXT,...",
            "only the parts of these input formats (such as step,iges: a library's\n"
            "shipped meshes left out); default: every part"},
-          {"deviation", "D", "the report's maximum mesh deviation D in millimetres (default 1)"},
+          {"measure", "",
+           "each record is the report's full comparison of representations (as `report`\n"
+           "measures them: NURBS, .cnb, NURSS, meshes, Draco, meshoptimizer, read back)"},
+          {"deviation", "D", "--measure's maximum mesh deviation D in millimetres (default 1)"},
           {"timeout", "S", "per part, wall and CPU time (default 300)"},
           {"memory", "MB", "per part, address space (default 4096)"},
           {"shard", "K/N",
@@ -91,6 +96,7 @@ int run_batch(const std::vector<std::string>& args, const CommandContext& contex
     for (const auto& name : split_list(a.value("inputs"))) options.inputs.push_back(&named_input_format(name));
     if (options.inputs.empty()) throw UsageError("--inputs needs at least one extension");
   }
+  options.measure = a.has("measure");
   options.deviation_mm = a.number("deviation", options.deviation_mm);
   if (!(options.deviation_mm > 0)) throw UsageError("--deviation must be a positive number of millimetres");
   options.seconds = a.number("timeout", options.seconds);

@@ -77,13 +77,16 @@ ConversionResult convert_loaded(const ConversionRequest& request, const LoadedIn
   const Scene& scene = input.scene;
   const double diagonal = checked_diagonal(scene, request.input);
   const bool mesh = writes_mesh(request, format);
+  const double tolerance = written_tolerance(scene, request.precision);
   std::optional<Scene> simplified;
+  double simplified_by = 0;  // the simplification's certified deviation
   if (request.simplify > 0) {
-    SimplifiedScene s = simplified_scene(scene, request.simplify, written_tolerance(scene, request.precision));
+    SimplifiedScene s = simplified_scene(scene, request.simplify, tolerance);
     tell(log.simplified, s);
     if (s.certified_deviation > request.simplify)
       throw FileError(request.input + ": --simplify " + number_text(request.simplify, 4) +
                       ": the certified deviation " + number_text(s.certified_deviation, 4) + " exceeds it");
+    simplified_by = s.certified_deviation;
     simplified = std::move(s.scene);
   }
   const Scene& source = simplified ? *simplified : scene;
@@ -93,6 +96,7 @@ ConversionResult convert_loaded(const ConversionRequest& request, const LoadedIn
   if (mesh && request.steps > 0) {
     written = tessellate_uniform(scene, request.steps);
     result.steps = request.steps;
+    result.deviation_basis = "uniform tessellation: no bound";
   } else if (mesh) {
     ConversionResult::Mesh m;
     m.deviation = request.deviation > 0 ? request.deviation : default_deviation(diagonal, request.input);
@@ -107,19 +111,33 @@ ConversionResult convert_loaded(const ConversionRequest& request, const LoadedIn
     m.report = meshed.report;
     written = std::move(meshed.meshes);
     result.mesh = m;
+    result.deviation_bound = m.report.certified_deviation + m.quantisation_budget;
+    result.deviation_basis = m.report.uncertified_triangles > 0
+                                 ? "the tessellator's certificate of its certified triangles (some are not)"
+                                 : "bound: the tessellator's certificate";
+    if (m.quantised) result.deviation_basis += " plus the quantisation budget";
   } else if (format.compact && !request.exact_nurbs) {
     CompactReport report;
-    written = compact_scene(source, written_tolerance(scene, request.precision), &report);
+    written = compact_scene(source, tolerance, &report);
     tell(log.compacted, report);
+    result.deviation_bound = simplified_by + tolerance + options.quantisation_budget;
+    result.deviation_basis = "bound: nothing moved by more than the written precision";
   } else {
     written = source;
+    if (format.compact) {  // the text writers round to the written precision
+      result.deviation_bound = simplified_by + 0.5 * tolerance + options.quantisation_budget;
+      result.deviation_basis = "bound: half the written precision (rounding)";
+    }
   }
+  if (simplified) result.deviation_basis += ", after the simplification's certificate";
+  if (!mesh && options.quantisation_budget > 0) result.deviation_basis += " plus the quantisation budget";
   if (format.meshes_only) {
     const int curves = drop_curves(written.root);
     if (curves > 0) tell(log.curves_dropped, curves);
   }
   write_scene(request.output, written, options);
   result.counts = count_entities(written);
+  tell(log.written, written);
   return result;
 }
 

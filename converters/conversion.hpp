@@ -4,6 +4,7 @@
 // the files it measures with its write options (scene_write_options) so that it measures what convert
 // writes. The commands only fill a ConversionRequest and print what the steps report (ConversionLog).
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -62,6 +63,7 @@ struct ConversionLog {
   std::function<void(const CertifiedMesh&)> sewn;           // a mesh of a file that named no edges
   std::function<void(const CompactReport&)> compacted;      // compact NURBS output
   std::function<void(int curves)> curves_dropped;           // NURBS curves a triangles-only format cannot hold
+  std::function<void(const Scene&)> written;                // the scene as handed to the writer, once written
 };
 
 // What was written.
@@ -78,6 +80,11 @@ struct ConversionResult {
     TessellationReport report;
   };
   std::optional<Mesh> mesh;
+  // How far the written file can be from the input's surfaces, a bound, and how it is known: the
+  // tessellator's certificate (plus the quantisation budget), the compact rewrites' and the written
+  // precision's, the simplification's certificate. NaN where no bound is known (--steps, STEP/IGES out).
+  double deviation_bound = std::numeric_limits<double>::quiet_NaN();
+  std::string deviation_basis;
 };
 
 // Converts `input` (load_input of the same request) to request.output: the certified mesh, the uniform

@@ -22,6 +22,7 @@
 #include "converters/file_formats.hpp"
 #include "converters/subdivision_fit_measurement.hpp"
 #include "converters/conversion.hpp"
+#include "converters/conversion_record.hpp"
 #include "converters/scene_preparation.hpp"
 #include "core/bounding_box.hpp"
 #include "core/geometry_error.hpp"
@@ -378,22 +379,13 @@ void add_simplified(PartRecord& record, const Scene& scene, double tolerance, do
   record.representations.push_back(f);
 }
 
-PartRecord measure(const std::string& input, const PartMeasurementOptions& options, PartViews* views) {
-  PartRecord record;
-  record.input = input;
-  const BrepTranslation loaded =
-      options.format ? load_scene_as(input, *options.format, options.read) : load_scene(input, options.read);
-  for (const auto& line : loaded.repairs) record.warnings.push_back(line);
-  for (const auto& f : loaded.fallbacks)
-    record.warnings.push_back(f.node + " face " + std::to_string(f.face_index) + " (" + f.surface_type +
-                              ") as a mesh: " + f.reason);
+PartRecord measure(const std::string& input, const BrepTranslation& loaded, const PartMeasurementOptions& options,
+                   PartViews* views) {
+  PartRecord record = conversion_record(input, loaded);
   const Scene& scene = loaded.scene;
-  record.unit = scene.unit.name;
-  record.diagonal = checked_diagonal(scene, input);
   record.deviation = options.deviation_mm / scene.unit.millimetres;
   if (!(record.deviation > 0) || !std::isfinite(record.deviation))
     throw std::invalid_argument("the maximum deviation must be a positive number");
-  record.nurbs = nurbs_storage(scene);
   if (record.nurbs.surfaces == 0) {
     measure_mesh_input(record, scene, Folder(options.files_folder), fs::path(input).stem().string(), views);
     return record;
@@ -455,14 +447,13 @@ PartRecord measure(const std::string& input, const PartMeasurementOptions& optio
 
 }  // namespace
 
-std::string record_error(std::string message, const std::string& input) {
-  if (message.starts_with(input + ": ")) message.erase(0, input.size() + 2);
-  return message;
-}
+namespace {
 
-PartRecord measure_part(const std::string& input, const PartMeasurementOptions& options, PartViews* views) {
+// `work`'s record, or a failed record with the one-line reason of whatever it threw.
+template <class Work>
+PartRecord record_or_failure(const std::string& input, PartViews* views, Work&& work) {
   try {
-    return measure(input, options, views);
+    return work();
   } catch (const std::exception& e) {
     PartRecord failed;
     failed.input = input;
@@ -471,6 +462,21 @@ PartRecord measure_part(const std::string& input, const PartMeasurementOptions& 
     if (views) *views = {};
     return failed;
   }
+}
+
+}  // namespace
+
+PartRecord measure_part(const std::string& input, const PartMeasurementOptions& options, PartViews* views) {
+  return record_or_failure(input, views, [&] {
+    const BrepTranslation loaded =
+        options.format ? load_scene_as(input, *options.format, options.read) : load_scene(input, options.read);
+    return measure(input, loaded, options, views);
+  });
+}
+
+PartRecord measure_loaded_part(const std::string& input, const BrepTranslation& loaded,
+                               const PartMeasurementOptions& options, PartViews* views) {
+  return record_or_failure(input, views, [&] { return measure(input, loaded, options, views); });
 }
 
 }  // namespace cadnurbs

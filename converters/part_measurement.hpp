@@ -6,6 +6,7 @@
 
 #include "report/html/report_html.hpp"
 #include "report/storage_record.hpp"
+#include "converters/conversion_record.hpp"
 #include "converters/file_formats.hpp"
 
 namespace cadnurbs {
@@ -28,8 +29,9 @@ struct PartMeasurementOptions {
 // null): also the texts the HTML report draws, the compact X3D NURBS file and the mesh at D as X3D.
 PartRecord measure_part(const std::string& input, const PartMeasurementOptions& options, PartViews* views = nullptr);
 
-// A reader's or writer's one-line message as a record's error: without the "<input>: " it starts with,
-// since a record names its input already.
-std::string record_error(std::string message, const std::string& input);
+// The same for a part read already (`loaded`, as load_scene gives it): batch reads a part once for its
+// record and its outputs.
+PartRecord measure_loaded_part(const std::string& input, const BrepTranslation& loaded,
+                               const PartMeasurementOptions& options, PartViews* views = nullptr);
 
 }  // namespace cadnurbs

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "analysis/tessellation/segment_meets_box.hpp"
-#include "analysis/tessellation/surface_normal.hpp"
+#include "analysis/tessellation/sample_patch_curvature.hpp"
 #include "core/point_in_loops.hpp"
 
 namespace cadnurbs::tessellation {
@@ -59,32 +59,8 @@ constexpr double kTwistTurn = 0.06;
 // The cells patch [u0, u0 + hu] x [v0, v0 + hv] wants so that its FMM estimate is `target`, and so that
 // along a straight direction of a twisted patch the normal turns by at most kTwistTurn per cell.
 PatchSteps patch_steps(const SurfaceEvaluator& e, double u0, double hu, double v0, double hv, double target) {
-  // Second derivatives sampled on a 4 x 4 lattice of the patch: an estimate, the certificate decides.
-  double muu = 0, muv = 0, mvv = 0, fuu = 0, fuv = 0, fvv = 0;
-  // The normal's turning rate along u and along v where that direction is straight (L_uu, L_vv = 0):
-  // n_v lies along the tangent perpendicular to S_v, with n_v . S_u = -L_uv, so |n_v| = |L_uv| / |S_u
-  // across S_v| (likewise for u). Developable surfaces (cylinders, cones) have L_uv = 0: no turn.
-  double turn_u = 0, turn_v = 0;
-  bool any_normal = false;
-  for (int b = 0; b <= 3; ++b)
-    for (int a = 0; a <= 3; ++a) {
-      const SurfaceJet jet = e.jet(u0 + hu * a / 3, v0 + hv * b / 3, 2);
-      fuu = std::max(fuu, jet.suu.norm()), fuv = std::max(fuv, jet.suv.norm()), fvv = std::max(fvv, jet.svv.norm());
-      // Normal components (the second fundamental form): tangential acceleration moves points
-      // within the surface and costs no deviation. Points without a normal (poles) are skipped.
-      const Eigen::Vector3d n = jet.su.cross(jet.sv);
-      if (!has_normal(jet)) continue;
-      const Eigen::Vector3d un = n.normalized();
-      muu = std::max(muu, std::abs(un.dot(jet.suu))), muv = std::max(muv, std::abs(un.dot(jet.suv)));
-      mvv = std::max(mvv, std::abs(un.dot(jet.svv)));
-      any_normal = true;
-      const double twist = std::abs(un.dot(jet.suv));
-      const double su_across = n.norm() / std::max(jet.sv.norm(), 1e-300);  // |S_u| across S_v
-      const double sv_across = n.norm() / std::max(jet.su.norm(), 1e-300);
-      if (su_across > 0) turn_v = std::max(turn_v, twist / su_across);
-      if (sv_across > 0) turn_u = std::max(turn_u, twist / sv_across);
-    }
-  if (!any_normal) muu = fuu, muv = fuv, mvv = fvv;
+  const PatchCurvature k = sample_patch_curvature(e, u0, hu, v0, hv);
+  const double muu = k.uu, muv = k.uv, mvv = k.vv, turn_u = k.turn_u, turn_v = k.turn_v;
   // One-step errors of the cell in each direction, and the mixed term.
   const double a = muu * hu * hu / 8, b = mvv * hv * hv / 8, c = 2 * muv * hu * hv / 8;
   // Step fractions 1 / n. A patch already within the target may share a cell with its
@@ -160,7 +136,7 @@ TessellationGrid plan_tessellation_grid(const SurfaceEvaluator& surface, const S
   const auto& vb = bound.v_breaks;
   const int nu = static_cast<int>(ub.size()) - 1, nv = static_cast<int>(vb.size()) - 1;
   const std::vector<char> used = patches_in_region(ub, vb, loops);
-  const double target = 0.85 * max_deviation;
+  const double target = kPlanningMargin * max_deviation;
   std::vector<double> steps_u(nu, 0.0), steps_v(nv, 0.0);  // wanted cells per span (fractional)
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {

@@ -6,8 +6,9 @@
 #include <stdexcept>
 
 #include "analysis/eval/surface_deviation_bound.hpp"
+#include "analysis/eval/surface_evaluator.hpp"
+#include "analysis/tessellation/sample_patch_curvature.hpp"
 #include "core/bezier_extraction.hpp"
-#include "core/knot_insertion.hpp"
 #include "core/knot_vector.hpp"
 
 namespace cadnurbs {
@@ -16,30 +17,54 @@ namespace {
 
 Eigen::Vector4d homogeneous(const Eigen::Vector3d& p, double w) { return {w * p.x(), w * p.y(), w * p.z(), w}; }
 
-// Control-net bounds tighten as the pieces shrink (the net converges to the surface): every knot span
-// of a curved direction is split into this many equal pieces first (the shape does not change). 8
-// brings the bounds within ~1.3x of the true second derivatives on circles and tori.
+// Control-net bounds tighten as the pieces shrink (the net converges to the curve): every Bezier
+// segment of a curved curve is split into this many equal pieces first (the shape does not change). 8
+// brings the bounds within ~1.3x of the true second derivatives on circles.
 constexpr int kRefinement = 8;
 
-std::vector<double> split_points(const std::vector<double>& knots, int order, int count) {
-  std::vector<double> out;
-  for (int i = order - 1; i < count; ++i) {
-    const double a = knots[i], b = knots[i + 1];
-    if (b > a)
-      for (int k = 1; k < kRefinement; ++k) out.push_back(a + (b - a) * k / kRefinement);
+// Bezier segments (bezier_segments), each of degree >= 2 split into kRefinement equal pieces by de
+// Casteljau's algorithm on the homogeneous points (linear in the segments, where inserting the knots
+// one by one into the whole curve costs the square of their number).
+std::vector<NurbsCurve> refined_pieces(const std::vector<NurbsCurve>& segments) {
+  if (segments.empty() || segments.front().order <= 2) return segments;
+  std::vector<NurbsCurve> out;
+  out.reserve(segments.size() * kRefinement);
+  const NurbsCurve& curve = segments.front();
+  const int n = curve.order;
+  for (const auto& segment : segments) {
+    std::vector<Eigen::Vector4d> rest(n);  // the part not yet cut off, as (w P, w)
+    for (int i = 0; i < n; ++i) rest[i] = homogeneous(segment.points[i], segment.weight(i));
+    const double a = segment.domain_start(), b = segment.domain_end();
+    std::vector<Eigen::Vector4d> left(n), work(n);
+    for (int k = 0; k < kRefinement; ++k) {
+      const double t0 = a + (b - a) * k / kRefinement, t1 = a + (b - a) * (k + 1) / kRefinement;
+      if (k + 1 < kRefinement) {
+        const double f = 1.0 / (kRefinement - k);  // where t1 falls in what is left
+        work = rest;
+        for (int level = 1; level < n; ++level) {
+          left[level - 1] = work[0];
+          for (int i = 0; i + level < n; ++i) work[i] = (1 - f) * work[i] + f * work[i + 1];
+        }
+        left[n - 1] = work[0];
+        rest = work;  // updated in place, work[i] ends as b^(p-i)_i: the right part's point i
+      } else {
+        left = rest;
+      }
+      NurbsCurve piece;
+      piece.dimension = curve.dimension;
+      piece.order = n;
+      piece.knots.assign(n, t0);
+      piece.knots.insert(piece.knots.end(), n, t1);
+      piece.points.resize(n);
+      if (curve.is_rational()) piece.weights.resize(n);
+      for (int i = 0; i < n; ++i) {
+        piece.points[i] = left[i].head<3>() / left[i][3];
+        if (curve.is_rational()) piece.weights[i] = left[i][3];
+      }
+      out.push_back(std::move(piece));
+    }
   }
   return out;
-}
-
-NurbsSurface refined(const NurbsSurface& s) {
-  NurbsSurface out = s;
-  if (out.u_order > 2) out = refine_knots(out, SurfaceDirection::u, split_points(out.u_knots, out.u_order, out.u_count));
-  if (out.v_order > 2) out = refine_knots(out, SurfaceDirection::v, split_points(out.v_knots, out.v_order, out.v_count));
-  return out;
-}
-
-NurbsCurve refined(const NurbsCurve& c) {
-  return c.order > 2 ? refine_knots(c, split_points(c.knots, c.order, c.count())) : c;
 }
 
 // Tensor-product Bernstein polynomial of degree (m, n) on one piece (a curve: n = 0), coefficients
@@ -55,7 +80,19 @@ struct Bernstein {
   const T& at(int i, int j) const { return c[i + j * (m + 1)]; }
 };
 
+// C(n, k): Pascal's triangle up to n = 127 (products of pieces of degree up to 25 stay below it), a
+// loop beyond.
 double binomial(int n, int k) {
+  constexpr int kRows = 128;
+  static const std::vector<double> triangle = [] {
+    std::vector<double> t(kRows * kRows, 0.0);
+    for (int r = 0; r < kRows; ++r) {
+      t[r * kRows] = 1.0;
+      for (int c = 1; c <= r; ++c) t[r * kRows + c] = t[(r - 1) * kRows + c - 1] + (c < r ? t[(r - 1) * kRows + c] : 0.0);
+    }
+    return t;
+  }();
+  if (n < kRows) return triangle[n * kRows + k];
   double r = 1;
   for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
   return r;
@@ -76,12 +113,19 @@ Bernstein<T> derivative(const Bernstein<T>& a, bool along_u, double span) {
 template <class R, class A, class B>
 Bernstein<R> product_as(const Bernstein<A>& a, const Bernstein<B>& b, const R& zero) {
   Bernstein<R> out(a.m + b.m, a.n + b.n, zero);
+  // C(m1, i1) C(m2, i2) / C(m1 + m2, i1 + i2), per direction, computed once
+  auto factors = [](int m1, int m2) {
+    std::vector<double> f((m1 + 1) * (m2 + 1));
+    for (int i1 = 0; i1 <= m1; ++i1)
+      for (int i2 = 0; i2 <= m2; ++i2) f[i1 * (m2 + 1) + i2] = binomial(m1, i1) * binomial(m2, i2) / binomial(m1 + m2, i1 + i2);
+    return f;
+  };
+  const std::vector<double> fu = factors(a.m, b.m), fv = factors(a.n, b.n);
   for (int j1 = 0; j1 <= a.n; ++j1)
     for (int i1 = 0; i1 <= a.m; ++i1)
       for (int j2 = 0; j2 <= b.n; ++j2)
         for (int i2 = 0; i2 <= b.m; ++i2) {
-          const double f = binomial(a.m, i1) * binomial(b.m, i2) / binomial(a.m + b.m, i1 + i2) * binomial(a.n, j1) *
-                           binomial(b.n, j2) / binomial(a.n + b.n, j1 + j2);
+          const double f = fu[i1 * (b.m + 1) + i2] * fv[j1 * (b.n + 1) + j2];
           out.at(i1 + i2, j1 + j2) += R(f * (a.at(i1, j1) * b.at(i2, j2)));
         }
   return out;
@@ -166,20 +210,6 @@ PieceBounds piece_bounds(const Bernstein<Eigen::Vector3d>& g, const Bernstein<do
   out.m.uv =
       largest(product(product(guv, w) + product(gu, wv) - product(gv, wu) - product(g, wuv), w) - 2.0 * (wv * a_u)) / w3;
   return out;
-}
-
-PieceBounds patch_bounds(const NurbsSurface& patch) {
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
-  for (const auto& q : patch.points) c += q;
-  c /= static_cast<double>(patch.points.size());
-  Bernstein<Eigen::Vector3d> g(patch.u_order - 1, patch.v_order - 1, Eigen::Vector3d::Zero());
-  Bernstein<double> w(patch.u_order - 1, patch.v_order - 1, 0.0);
-  for (int j = 0; j < patch.v_order; ++j)
-    for (int i = 0; i < patch.u_order; ++i) {
-      w.at(i, j) = patch.weight(i, j);
-      g.at(i, j) = patch.weight(i, j) * (patch.point(i, j) - c);
-    }
-  return piece_bounds(g, w, patch.u_end() - patch.u_start(), patch.v_end() - patch.v_start());
 }
 
 PieceBounds segment_bounds(const NurbsCurve& segment) {
@@ -287,18 +317,27 @@ struct SurfaceModel {
   }
 };
 
-SurfaceModel surface_model(const NurbsSurface& given) {
-  const NurbsSurface surface = refined(given);
+// The grid model of `surface`: the largest sampled normal curvatures over its Bezier patches (the
+// tessellator's own sampling, sample_patch_curvature.hpp), the kinks bounded from the control net, and
+// the largest sampled |S_u|, |S_v| (in `speed`).
+SurfaceModel surface_model(const NurbsSurface& surface, double& speed) {
   SurfaceModel model;
   model.u0 = surface.u_start(), model.v0 = surface.v_start();
   model.du = surface.u_end() - model.u0, model.dv = surface.v_end() - model.v0;
   const SurfaceDeviationBound bound = surface_deviation_bound(surface);  // its breaks and C0 lines
-  for (const auto& patch : bezier_patches(surface)) {
-    const SecondDerivativeBound b = patch_bounds(patch).m;
-    model.m.uu = std::max(model.m.uu, b.uu);
-    model.m.uv = std::max(model.m.uv, b.uv);
-    model.m.vv = std::max(model.m.vv, b.vv);
-  }
+  const SurfaceEvaluator evaluator(surface);
+  const auto& ub = bound.u_breaks;
+  const auto& vb = bound.v_breaks;
+  speed = 0.0;
+  for (size_t j = 0; j + 1 < vb.size(); ++j)
+    for (size_t i = 0; i + 1 < ub.size(); ++i) {
+      const tessellation::PatchCurvature k =
+          tessellation::sample_patch_curvature(evaluator, ub[i], ub[i + 1] - ub[i], vb[j], vb[j + 1] - vb[j]);
+      model.m.uu = std::max(model.m.uu, k.uu);
+      model.m.uv = std::max(model.m.uv, k.uv);
+      model.m.vv = std::max(model.m.vv, k.vv);
+      speed = std::max({speed, k.su, k.sv});
+    }
   if (!bound.c0_u.empty()) model.kinks_u = surface_kinks_u(surface, bezier_patches(surface), bound);
   if (!bound.c0_v.empty()) {
     const NurbsSurface t = transposed(surface);
@@ -319,13 +358,12 @@ struct CurveModel {
   }
 };
 
-CurveModel curve_model(const NurbsCurve& given) {
-  const NurbsCurve curve = refined(given);
+CurveModel curve_model(const NurbsCurve& curve) {
   CurveModel model;
   model.a = curve.domain_start(), model.b = curve.domain_end();
   const int p = curve.degree();
   const auto segments = bezier_segments(curve);
-  for (const auto& seg : segments) model.m2 = std::max(model.m2, segment_bounds(seg).m.uu);
+  for (const auto& piece : refined_pieces(segments)) model.m2 = std::max(model.m2, segment_bounds(piece).m.uu);
   // Only where the curve is C0 (multiplicity >= degree): elsewhere the pieces join with C1.
   const std::vector<double> corners = c0_knots(curve.knots, curve.order, curve.count());
   for (size_t s = 0; s + 1 < segments.size(); ++s) {
@@ -352,16 +390,6 @@ int smallest_count(Deviation deviation, double target, int cap) {
   return cap;
 }
 
-// Bound on |S_u| and |S_v| over the surface.
-double surface_first_derivative_bound(const NurbsSurface& given) {
-  double bound = 0.0;
-  for (const auto& patch : bezier_patches(refined(given))) {
-    const PieceBounds b = patch_bounds(patch);
-    bound = std::max({bound, b.su, b.sv});
-  }
-  return bound;
-}
-
 }  // namespace
 
 double uniform_chord_deviation_bound(const NurbsCurve& curve, int n) { return curve_model(curve).deviation(std::max(1, n)); }
@@ -371,15 +399,18 @@ TessellationHints plan_tessellation_hints(const TrimmedSurface& face, double dev
     throw std::invalid_argument("plan_tessellation_hints: deviation must be positive and finite");
   TessellationHints hints;
   const NurbsSurface& s = face.surface;
-  const SurfaceModel model = surface_model(s);
+  double speed = 0.0;  // largest |S_u|, |S_v|
+  const SurfaceModel model = surface_model(s, speed);
+  // Sampled curvatures: aimed below D by the planning margin.
+  const double target = tessellation::kPlanningMargin * deviation;
   const int def_u = 2 * s.u_count, def_v = 2 * s.v_count;
-  if (model.deviation(def_u, def_v) > deviation) {
+  if (model.deviation(def_u, def_v) > target) {
     const int cap = kMaxSurfaceTessellation;
     int best_u = cap, best_v = cap;
     long best = std::numeric_limits<long>::max();
     for (int nu = 1; nu <= cap; ++nu) {
-      const int nv = smallest_count([&](int n) { return model.deviation(nu, n); }, deviation, cap);
-      if (model.deviation(nu, nv) > deviation) continue;
+      const int nv = smallest_count([&](int n) { return model.deviation(nu, n); }, target, cap);
+      if (model.deviation(nu, nv) > target) continue;
       const long cells = static_cast<long>(nu) * nv;
       if (cells < best || (cells == best && nu + nv < best_u + best_v)) best = cells, best_u = nu, best_v = nv;
     }
@@ -392,9 +423,10 @@ TessellationHints plan_tessellation_hints(const TrimmedSurface& face, double dev
     hints.u = best_u == def_u ? 0 : best_u;
     hints.v = best_v == def_v ? 0 : best_v;
   }
-  // Trimming chords: (u,v) error e moves the surface point by <= sqrt(2) L |e|.
-  const double l = surface_first_derivative_bound(s);
-  const double uv_target = l > 0.0 ? deviation / (std::sqrt(2.0) * l) : std::numeric_limits<double>::infinity();
+  // Trimming chords: (u,v) error e moves the surface point by <= sqrt(2) L |e| (L sampled, so the
+  // same margin).
+  const double l = speed;
+  const double uv_target = l > 0.0 ? target / (std::sqrt(2.0) * l) : std::numeric_limits<double>::infinity();
   for (const auto& loop : face.loops) {
     std::vector<int> counts;
     for (const auto& segment : loop.segments) {

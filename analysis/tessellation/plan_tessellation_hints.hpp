@@ -26,23 +26,25 @@
 //
 // So a face is drawn within D when (1) the grid's triangles are within D of the surface and (2) every
 // trimming chord, mapped through the surface, is within D of the curve's image. (1): on a grid cell of
-// h_u x h_v the linear interpolant deviates by at most (1/8)(h_u^2 M_uu + 2 h_u h_v M_uv + h_v^2 M_vv)
-// (Filip, Magedson & Markot, as in surface_deviation_bound.hpp), M bounds on the second derivatives;
-// cells straddle knot lines (the grid ignores knots), so across a line where S is only C0 the term
-// h/4 J is added, J a bound on the jump of the first derivative there (0 when the parametrisation is
-// C1 after all, as at the joints of a rational circle's arcs). (2): a chord of a 2D curve sampled with
-// step h deviates in (u,v) by at most h^2/8 |c''| + h/4 J (same reasoning), and a (u,v) error e moves
-// the surface point by at most sqrt(2) L |e|, L a bound on |S_u| and |S_v|. Each of (1) and (2) is
-// held within D; they act in different directions (normal to the surface, along it).
-// The bounds are rigorous and come from the control net: each rational derivative is written as one
-// polynomial over a power of W (S_uv = ((G_uv W + G_u W_v - G_v W_u - G W_uv) W - 2 W_v (G_u W -
-// G W_u)) / W^3, G = w (P - c)), in Bernstein form, whose largest coefficient bounds it (a quotient-
-// rule bound term by term, as surface_deviation_bound.hpp's, cannot let terms cancel and is 2-6x
-// looser on cylinders and tori); and they are taken on the surface (curve) with every knot span of a
-// curved direction split in 8 by knot insertion (same shape), whose small pieces' nets hug the shape.
-// Measured (tests/analysis/plan_tessellation_hints_test.cpp): a quarter cylinder gets within 1.1x of the
-// fewest equal-angle chords, a trimming circle within 1.2x of the fewest uniform chords, a torus
-// patch's grid is ~2x finer than it needs.
+// h_u x h_v the linear interpolant deviates by about (1/8)(h_u^2 M_uu + 2 h_u h_v M_uv + h_v^2 M_vv)
+// (Filip, Magedson & Markot, as in surface_deviation_bound.hpp), M the largest normal curvatures; cells
+// straddle knot lines (the grid ignores knots), so across a line where S is only C0 the term h/4 J is
+// added, J a bound on the jump of the first derivative there (0 when the parametrisation is C1 after
+// all, as at the joints of a rational circle's arcs). (2): a chord of a 2D curve sampled with step h
+// deviates in (u,v) by at most h^2/8 |c''| + h/4 J (same reasoning), and a (u,v) error e moves the
+// surface point by at most sqrt(2) L |e|, L the largest |S_u| and |S_v|. Each of (1) and (2) is held
+// within kPlanningMargin D; they act in different directions (normal to the surface, along it).
+// Where the figures come from: M and L are the tessellator's own planning samples
+// (sample_patch_curvature.hpp, a 4 x 4 lattice of every Bezier patch) — estimates, at the price of 16
+// evaluations a patch, since a viewer certifies nothing anyway; the cost grows with the square of the
+// degree. The kink jumps and the trimming curves' |c''| are bounds from the control net: a rational
+// derivative written as one polynomial over a power of W, in Bernstein form, bounded by its largest
+// coefficient (terms that cancel in the true derivative cancel in the coefficients too), on the curve
+// with every knot span split in 8 by knot insertion, so the small pieces' nets hug the shape. Both are
+// one-dimensional, so these products cost the square of the degree, not its fourth power.
+// Measured (tests/analysis/plan_tessellation_hints_test.cpp, on the viewer's grid sampled densely): a
+// quarter cylinder within 1.13x of the fewest equal-angle chords, a trimming circle within 1.32x of the
+// fewest uniform chords, a torus patch and a sphere within D.
 //
 // Counts: the surface pair (u, v) with the fewest grid cells that meets D, each direction at most 128
 // segments (larger grids make X_ITE's trimming, which locates every trim point among all grid

@@ -12,8 +12,10 @@
 #include "report/report_formats.hpp"
 #include "converters/batch/batch_record.hpp"
 #include "converters/batch/library_listing.hpp"
+#include "converters/batch/warm_parent.hpp"
 #include "converters/batch/worker_pool.hpp"
 #include "converters/conversion.hpp"
+#include "converters/conversion_record.hpp"
 #include "converters/part_measurement.hpp"
 #include "formats/common/file_io.hpp"
 
@@ -46,31 +48,41 @@ void remove_outputs(const BatchOptions& options, const fs::path& stem) {
   for (const auto& target : options.targets) fs::remove(stem.string() + "." + target, ignored);
 }
 
-// The worker's work for one part: the report's record, then each output, then the record on disk.
+// The worker's work for one part: the part read once, then each output written from it, each as
+// `convert INPUT -o OUT` would write it, then the record on disk: what the conversions knew
+// (conversion_record.hpp), or with --measure the report's full comparison (part_measurement.hpp).
 int run_part(const BatchOptions& options, const LibraryPart& part, const fs::path& stem) {
   const auto start = Clock::now();
   const std::string input = input_path(options, part);
-  SceneReadOptions read = options.read;
+  ConversionRequest request;  // convert's defaults
+  request.input = input;
   // The STEP/IGES wall inside the worker stops a little before the worker is killed, naming the stage.
-  read.brep.limits = {0.9 * options.seconds, options.megabytes};
-  PartMeasurementOptions measurement;
-  measurement.deviation_mm = options.deviation_mm;
-  measurement.read = read;
-  if (part.by_content) measurement.format = part.format;
-  PartRecord record = measure_part(input, measurement);
-  fs::create_directories(stem.parent_path());
-  for (const auto& target : options.targets) {
-    if (record.failed) break;
-    ConversionRequest request;  // convert's defaults, as `convert INPUT -o OUT` would write it
-    request.input = input;
-    request.output = stem.string() + "." + target;
-    request.read = read;
-    if (part.by_content) request.input_format = part.format;
-    try {
-      convert_file(request);
-    } catch (const std::exception& error) {
-      record = failed_record(part.relative, record_error(error.what(), input));
+  request.read = options.read;
+  request.read.brep.limits = {0.9 * options.seconds, options.megabytes};
+  if (part.by_content) request.input_format = part.format;
+  PartRecord record;
+  try {
+    const LoadedInput loaded = load_input(request);
+    if (options.measure) {
+      PartMeasurementOptions measurement;
+      measurement.deviation_mm = options.deviation_mm;
+      measurement.read = request.read;
+      record = measure_loaded_part(input, loaded.loaded, measurement);
+    } else {
+      record = conversion_record(input, loaded.loaded);
     }
+    fs::create_directories(stem.parent_path());
+    for (const auto& target : options.targets) {
+      if (record.failed) break;
+      request.output = stem.string() + "." + target;
+      Scene written;  // kept for the record's figures
+      ConversionLog log;
+      if (!options.measure) log.written = [&](const Scene& scene) { written = scene; };
+      const ConversionResult result = convert_loaded(request, loaded, log);
+      if (!options.measure) add_written_file(record, target, request.output, written, result);
+    }
+  } catch (const std::exception& error) {
+    record = failed_record(part.relative, record_error(error.what(), input));
   }
   if (record.failed) remove_outputs(options, stem);
   record.input = part.relative;
@@ -122,7 +134,10 @@ std::string options_key(const BatchOptions& options) {
   std::ostringstream key;
   key << "to=";
   for (size_t i = 0; i < options.targets.size(); ++i) key << (i ? "," : "") << options.targets[i];
-  key << ";deviation_mm=" << options.deviation_mm;
+  if (options.measure)
+    key << ";measure;deviation_mm=" << options.deviation_mm;
+  else
+    key << ";record=conversion";
   return key.str();
 }
 
@@ -194,6 +209,7 @@ BatchSummary convert_library(const BatchOptions& options) {
     to_convert.push_back(i);
   }
   const ProcessLimits limits{options.seconds, options.megabytes};
+  if (!to_convert.empty()) warm_up_readers();
   run_in_workers(
       static_cast<int>(to_convert.size()), options.jobs, limits,
       [&](int k) { return run_part(options, parts[to_convert[k]], stems[to_convert[k]]); },

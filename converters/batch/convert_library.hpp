@@ -13,7 +13,10 @@ struct BatchOptions {
   int jobs = 1;                              // workers at a time
   std::vector<std::string> targets{"x3dv"};  // output extensions, each written as OUT_DIR/<part>.<ext>
   std::vector<const FileFormat*> inputs;     // only parts of these formats (library_listing.hpp); empty: all
-  double deviation_mm = 1.0;                 // D of the report's meshes (the report's default)
+  // The record: false, what converting the part already knows (conversion_record.hpp); true, the
+  // report's full comparison of representations (part_measurement.hpp) at D = deviation_mm.
+  bool measure = false;
+  double deviation_mm = 1.0;                 // D of --measure's meshes (the report's default)
   double seconds = 300;                      // per part: wall and CPU time
   long megabytes = 4096;                     // per part: address space
   int shard = 0, shards = 1;                 // this run's slice of the library (library_listing.hpp)

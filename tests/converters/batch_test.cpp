@@ -142,10 +142,10 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunRedoesOnlyAL
   ASSERT_NE(assembly.find(usage), std::string::npos);
   assembly.replace(assembly.find(usage), usage.size(), "NEXT_ASSEMBLY_USAGE_OCCURRENCE('1','nut_1','',#39,#39,$)");
   make("lib/contains-itself.stp", assembly);
-  // A real part that needs minutes of CPU (over 300 s here): beyond the time limit, like a loop.
+  // A real part whose read alone takes OpenCASCADE over 10 s here: beyond a 5 s limit, like a loop.
   copy(CADNURBS_SHARED_DIR "/corpus/step/11752.stp", "lib/slow.stp");
   const std::string out = path("out");
-  const CommandResult r = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 20");
+  const CommandResult r = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 5");
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_EQ(r.out, out + ": 8 parts: 8 converted now, 0 done before, 6 failed\n");
   const nlohmann::json j = report(out);
@@ -167,7 +167,7 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunRedoesOnlyAL
     EXPECT_TRUE(fs::exists(out + "/" + input + ".json")) << input;
   }
   // The part redone below ends by a limit, whichever the load lets come first: the wall-time or CPU-time
-  // limit (20 s), or the read's wall (18 s, then naming the face it was converting, which depends on
+  // limit (5 s), or the read's wall (4.5 s, then naming the face it was converting, which depends on
   // the load too): its line is the one line of the report a rerun may change.
   auto without_slow = [](std::string report) {
     const size_t at = report.find("- slow.stp: exceeded ");
@@ -175,7 +175,7 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunRedoesOnlyAL
     return report;
   };
   const std::string first_report = without_slow(read_file(out + "/report.md"));
-  const CommandResult again = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 20");
+  const CommandResult again = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 5");
   EXPECT_EQ(again.status, 3);
   // The part that exceeded the time limit is done again (a limit depends on the machine's load); the
   // others, failed for their content or converted, keep their records.
@@ -183,8 +183,61 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunRedoesOnlyAL
   EXPECT_EQ(without_slow(read_file(out + "/report.md")), first_report);
   // A changed input is done again; the others are not.
   make("lib/empty.step", read_file(kStep));
-  const CommandResult changed = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 20");
+  const CommandResult changed = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 5");
   EXPECT_EQ(changed.out, out + ": 8 parts: 2 converted now, 6 done before, 5 failed\n");
+}
+
+TEST_F(Batch, ARecordHoldsWhatTheConversionKnewAndMeasureAddsTheComparison) {
+  copy(kStep, "lib/part.step");
+  // What convert writes for the same part: batch's outputs must be these bytes.
+  ASSERT_EQ(run("convert " + path("lib/part.step") + " -o " + path("convert.x3dv")).status, 0);
+  ASSERT_EQ(run("convert " + path("lib/part.step") + " -o " + path("convert.stl")).status, 0);
+  const std::string light = path("light");
+  const CommandResult r = run("batch " + path("lib") + " -o " + light + " --jobs 1 --to x3dv,stl");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_file(light + "/part.step.x3dv"), read_file(path("convert.x3dv")));
+  EXPECT_EQ(read_file(light + "/part.step.stl"), read_file(path("convert.stl")));
+  const nlohmann::json record = nlohmann::json::parse(read_file(light + "/part.step.json"));
+  ASSERT_EQ(record["status"], "ok");
+  const double d = record["deviation"];  // convert's default: 1e-3 of the diagonal
+  EXPECT_NEAR(d, 1e-3 * record["diagonal"].get<double>(), 1e-12 * d);
+  ASSERT_EQ(record["representations"].size(), 2u);
+  const auto& nurbs = record["representations"][0];
+  const auto& mesh = record["representations"][1];
+  EXPECT_EQ(nurbs["key"], "x3dv");
+  EXPECT_EQ(nurbs["kind"], "nurbs");
+  EXPECT_EQ(nurbs["bytes"], fs::file_size(light + "/part.step.x3dv"));
+  EXPECT_GT(nurbs["gzip_bytes"], 0);
+  EXPECT_LT(nurbs["gzip_bytes"], nurbs["bytes"]);
+  EXPECT_EQ(nurbs["deviation_basis"], "bound: nothing moved by more than the written precision");
+  EXPECT_NEAR(nurbs["deviation"].get<double>(), 1e-6 * record["diagonal"].get<double>(), 1e-9 * d);
+  EXPECT_EQ(mesh["key"], "stl");
+  EXPECT_EQ(mesh["kind"], "mesh");
+  EXPECT_EQ(mesh["bytes"], fs::file_size(light + "/part.step.stl"));
+  EXPECT_EQ(mesh["deviation_basis"], "bound: the tessellator's certificate");
+  EXPECT_GT(mesh["deviation"].get<double>(), 0.1 * d);
+  EXPECT_LE(mesh["deviation"].get<double>(), d);
+  EXPECT_EQ(record["mesh"]["certified_deviation"], mesh["deviation"]);
+  // binary STL: 84 bytes and 50 a triangle
+  EXPECT_EQ(mesh["bytes"].get<long>(), 84 + 50 * record["mesh"]["triangles"].get<long>());
+
+  // --measure: the report's comparison, every figure saying how its deviation is known; the outputs
+  // are still convert's.
+  const std::string measured = path("measured");
+  ASSERT_EQ(run("batch " + path("lib") + " -o " + measured + " --jobs 1 --measure --deviation 0.5").status, 0);
+  EXPECT_EQ(read_file(measured + "/part.step.x3dv"), read_file(path("convert.x3dv")));
+  const nlohmann::json full = nlohmann::json::parse(read_file(measured + "/part.step.json"));
+  EXPECT_EQ(full["deviation"], 0.5);
+  std::vector<std::string> keys;
+  for (const auto& f : full["representations"]) {
+    keys.push_back(f["key"]);
+    EXPECT_FALSE(f["deviation_basis"].get<std::string>().empty()) << f["key"];
+  }
+  for (const char* key : {"x3dv-compact", "cnb", "wrl-mesh", "stl-mesh", "draco", "meshopt"})
+    EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
+  // A record made without --measure is not reused by a run with it, nor the other way round.
+  const CommandResult again = run("batch " + path("lib") + " -o " + light + " --jobs 1 --to x3dv,stl --measure");
+  EXPECT_EQ(again.out, light + ": 1 parts: 1 converted now, 0 done before, 0 failed\n");
 }
 
 TEST_F(Batch, AKilledBatchLosesNothingAndTheRerunDoesOnlyWhatIsLeft) {
