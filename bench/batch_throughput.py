@@ -6,10 +6,11 @@ sorted list, as library_sizes.py picks its FreeCAD sample), hard-linked (or copi
 so that batch reads exactly those. Three runs, one after another on the same machine, each with the same
 number of processes at a time (--jobs):
 
-  batch    cadnurbs batch OUT/in -o OUT/batch --jobs N --inputs step --to x3dv,wrl --deviation 0.01
-           (a fresh OUT/batch: nothing reused). Per part it does more than convert: the report's record,
-           which writes and reads back every representation (NURBS, .cnb, meshes at D, Draco, meshopt).
+  batch    cadnurbs batch OUT/in -o OUT/batch --jobs N --inputs step --to x3dv (a fresh OUT/batch: nothing
+           reused): the part read once, its .x3dv, and the record of what the conversion knew.
   convert  cadnurbs convert P.step -o P.x3dv, N processes at a time: the conversion alone.
+  measure  with --with-measure: the batch again with --measure --deviation 0.01 (the report's record:
+           every representation written and read back), for what the full comparison costs.
   freecad  freecadcmd bench/freecad_step_to_wrl.py per part (Part reads the STEP, MeshPart meshes it at
            LinearDeflection 0.01 mm, Mesh writes the .wrl), N processes at a time: what KiCad users run.
 
@@ -67,6 +68,7 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--freecadcmd", default="freecadcmd")
     ap.add_argument("--timeout", type=float, default=600, help="seconds per part")
+    ap.add_argument("--with-measure", action="store_true", help="also time batch --measure")
     args = ap.parse_args()
     cadnurbs = args.cadnurbs.resolve()
     if args.library is None:
@@ -88,9 +90,18 @@ def main():
     # 1. cadnurbs batch.
     t0 = time.perf_counter()
     batch = subprocess.run([str(cadnurbs), "batch", str(out / "in"), "-o", str(out / "batch"), "--jobs", str(args.jobs),
-                            "--inputs", "step", "--to", "x3dv,wrl", "--deviation", str(DEVIATION),
-                            "--timeout", str(args.timeout)], capture_output=True, text=True)
+                            "--inputs", "step", "--to", "x3dv", "--timeout", str(args.timeout)],
+                           capture_output=True, text=True)
     batch_seconds = time.perf_counter() - t0
+    measure_seconds = measure_failed = None
+    if args.with_measure:
+        t0 = time.perf_counter()
+        subprocess.run([str(cadnurbs), "batch", str(out / "in"), "-o", str(out / "measure"), "--jobs", str(args.jobs),
+                        "--inputs", "step", "--to", "x3dv", "--measure", "--deviation", str(DEVIATION),
+                        "--timeout", str(args.timeout)], capture_output=True, text=True)
+        measure_seconds = time.perf_counter() - t0
+        measured = json.loads((out / "measure" / "report.json").read_text())
+        measure_failed = sum(1 for p in measured["parts"] if p.get("status") != "ok")
     report = json.loads((out / "batch" / "report.json").read_text())
     batch_failed = sum(1 for p in report["parts"] if p.get("status") != "ok")
 
@@ -125,7 +136,6 @@ def main():
 
     n = len(inputs)
     ours_x3dv = [out / "batch" / f / (s.name + ".x3dv") for f, _, s in inputs]
-    ours_wrl = [out / "batch" / f / (s.name + ".wrl") for f, _, s in inputs]
     fc_wrl = [out / "freecad" / f / (s.stem + ".wrl") for f, _, s in inputs]
     kicad = [orig.with_suffix(".wrl") for _, orig, _ in inputs]
     both = [i for i in range(n) if ours_x3dv[i].exists() and fc_wrl[i].exists() and kicad[i].exists()]
@@ -136,12 +146,16 @@ def main():
         "",
         "| run | wall s | parts/min | failed | speed against FreeCAD (its wall s / this run's) |",
         "|---|---:|---:|---:|---:|",
-        f"| cadnurbs batch (record + .x3dv + .wrl) | {batch_seconds:.1f} | {rate(batch_seconds):.1f} | {batch_failed} | "
-        f"{freecad_seconds / batch_seconds:.2f} |",
+        f"| cadnurbs batch --to x3dv (record + .x3dv) | {batch_seconds:.1f} | {rate(batch_seconds):.1f} | "
+        f"{batch_failed} | {freecad_seconds / batch_seconds:.2f} |",
+    ] + ([f"| cadnurbs batch --to x3dv --measure | {measure_seconds:.1f} | {rate(measure_seconds):.1f} | "
+          f"{measure_failed} | {freecad_seconds / measure_seconds:.2f} |"] if measure_seconds else []) + [
         f"| cadnurbs convert to .x3dv only | {convert_seconds:.1f} | {rate(convert_seconds):.1f} | "
         f"{convert_ok.count(False)} | {freecad_seconds / convert_seconds:.2f} |",
         f"| FreeCAD {DEVIATION} mm mesh .wrl | {freecad_seconds:.1f} | {rate(freecad_seconds):.1f} | "
         f"{freecad_ok.count(False)} | 1.00 |",
+        "",
+        f"batch / convert (wall, same --jobs): {batch_seconds / convert_seconds:.2f}",
         "",
         f"Bytes over the {len(both)} parts every side converted (raw / gzip'd at level 9):",
         "",
@@ -150,7 +164,6 @@ def main():
     ]
     kicad_raw, kicad_gz = totals(pick(kicad))
     for label, paths in (("ours .x3dv (NURBS, compact)", pick(ours_x3dv)),
-                         ("ours .wrl (VRML97 NURBS, protos not counted)", [p for p in pick(ours_wrl) if p.exists()]),
                          (f"FreeCAD .wrl (mesh, {DEVIATION} mm)", pick(fc_wrl)), ("KiCad's shipped .wrl", pick(kicad))):
         raw, gz = totals(paths)
         lines.append(f"| {label} | {raw:,} | {gz:,} | {raw / kicad_raw:.3f} | {gz / kicad_gz:.3f} |")
