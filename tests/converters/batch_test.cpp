@@ -142,10 +142,10 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunRedoesOnlyAL
   ASSERT_NE(assembly.find(usage), std::string::npos);
   assembly.replace(assembly.find(usage), usage.size(), "NEXT_ASSEMBLY_USAGE_OCCURRENCE('1','nut_1','',#39,#39,$)");
   make("lib/contains-itself.stp", assembly);
-  // A real part whose read alone takes OpenCASCADE over 10 s here: beyond a 5 s limit, like a loop.
+  // A real part whose read alone takes OpenCASCADE over 10 s here: beyond a 3 s limit, like a loop.
   copy(CADNURBS_SHARED_DIR "/corpus/step/11752.stp", "lib/slow.stp");
   const std::string out = path("out");
-  const CommandResult r = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 5");
+  const CommandResult r = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 3");
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_EQ(r.out, out + ": 8 parts: 8 converted now, 0 done before, 6 failed\n");
   const nlohmann::json j = report(out);
@@ -167,7 +167,7 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunRedoesOnlyAL
     EXPECT_TRUE(fs::exists(out + "/" + input + ".json")) << input;
   }
   // The part redone below ends by a limit, whichever the load lets come first: the wall-time or CPU-time
-  // limit (5 s), or the read's wall (4.5 s, then naming the face it was converting, which depends on
+  // limit (3 s), or the read's wall (2.7 s, then naming the face it was converting, which depends on
   // the load too): its line is the one line of the report a rerun may change.
   auto without_slow = [](std::string report) {
     const size_t at = report.find("- slow.stp: exceeded ");
@@ -175,7 +175,7 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunRedoesOnlyAL
     return report;
   };
   const std::string first_report = without_slow(read_file(out + "/report.md"));
-  const CommandResult again = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 5");
+  const CommandResult again = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 3");
   EXPECT_EQ(again.status, 3);
   // The part that exceeded the time limit is done again (a limit depends on the machine's load); the
   // others, failed for their content or converted, keep their records.
@@ -183,7 +183,7 @@ TEST_F(Batch, GoodPartsConvertBrokenOnesFailWithAReasonAndASecondRunRedoesOnlyAL
   EXPECT_EQ(without_slow(read_file(out + "/report.md")), first_report);
   // A changed input is done again; the others are not.
   make("lib/empty.step", read_file(kStep));
-  const CommandResult changed = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 5");
+  const CommandResult changed = run("batch " + path("lib") + " -o " + out + " --jobs 2 --timeout 3");
   EXPECT_EQ(changed.out, out + ": 8 parts: 2 converted now, 6 done before, 5 failed\n");
 }
 
