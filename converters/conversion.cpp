@@ -137,7 +137,7 @@ ConversionResult convert_loaded(const ConversionRequest& request, const LoadedIn
   }
   write_scene(request.output, written, options);
   result.counts = count_entities(written);
-  tell(log.written, written);
+  tell(log.written, written, result);
   return result;
 }
 

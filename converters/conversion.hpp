@@ -56,6 +56,8 @@ LoadedInput load_input(const ConversionRequest& request);
 // diagonal unless given). A certified mesh for a quantising format gets its own budget (convert_loaded).
 SceneWriteOptions scene_write_options(const ConversionRequest& request, const Scene& scene, double diagonal);
 
+struct ConversionResult;
+
 // What the steps tell as they end, for the command to print (each may be empty: batch prints nothing).
 struct ConversionLog {
   std::function<void(const BrepTranslation&)> loaded;       // repairs and fallen-back faces
@@ -63,7 +65,8 @@ struct ConversionLog {
   std::function<void(const CertifiedMesh&)> sewn;           // a mesh of a file that named no edges
   std::function<void(const CompactReport&)> compacted;      // compact NURBS output
   std::function<void(int curves)> curves_dropped;           // NURBS curves a triangles-only format cannot hold
-  std::function<void(const Scene&)> written;                // the scene as handed to the writer, once written
+  // Once written: the scene as handed to the writer, and what the conversion returns.
+  std::function<void(const Scene&, const ConversionResult&)> written;
 };
 
 // What was written.

@@ -23,6 +23,7 @@ PartRecord conversion_record(const std::string& input, const BrepTranslation& lo
 // Adds the file convert_loaded wrote at `path` as the representation `key` (batch: the target, "x3dv"):
 // its bytes and gzip'd bytes as on disk, the floats and integers of `written` (the scene handed to the
 // writer, ConversionLog::written) by the report's accounting, and result's deviation bound and basis.
+// Meant to be called from ConversionLog::written, which hands over both.
 // A certified mesh also gives the record its mesh figures and certificate.
 void add_written_file(PartRecord& record, const std::string& key, const std::string& path, const Scene& written,
                       const ConversionResult& result);

@@ -445,10 +445,6 @@ PartRecord measure(const std::string& input, const BrepTranslation& loaded, cons
   return record;
 }
 
-}  // namespace
-
-namespace {
-
 // `work`'s record, or a failed record with the one-line reason of whatever it threw.
 template <class Work>
 PartRecord record_or_failure(const std::string& input, PartViews* views, Work&& work) {

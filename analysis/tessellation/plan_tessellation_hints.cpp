@@ -236,14 +236,17 @@ struct Kink {
 // across the line is (dG W - dW G) / W^2 along it, dG, dW the difference of the homogeneous
 // derivatives from the control rows on both sides (Bézier form): bounded by its numerator's largest
 // coefficient, exactly 0 where the parametrisation is C1 after all (the arcs of a rational circle).
-std::vector<Kink> surface_kinks_u(const NurbsSurface& surface, const std::vector<NurbsSurface>& patches,
-                                  const SurfaceDeviationBound& bound) {
+std::vector<Kink> surface_kinks_u(const NurbsSurface& surface) {
   std::vector<Kink> out;
-  const int columns = static_cast<int>(bound.u_breaks.size()) - 1, rows = static_cast<int>(bound.v_breaks.size()) - 1;
+  const std::vector<double> c0_u = c0_knots(surface.u_knots, surface.u_order, surface.u_count);
   const int p = surface.u_order - 1;
-  if (p < 1) return out;
-  for (const double k : bound.c0_u) {
-    const int i = static_cast<int>(std::lower_bound(bound.u_breaks.begin(), bound.u_breaks.end(), k) - bound.u_breaks.begin());
+  if (p < 1 || c0_u.empty()) return out;
+  const std::vector<NurbsSurface> patches = bezier_patches(surface);
+  const std::vector<double> u_breaks = domain_breaks(surface.u_knots, surface.u_order, surface.u_count);
+  const int columns = static_cast<int>(u_breaks.size()) - 1;
+  const int rows = static_cast<int>(domain_breaks(surface.v_knots, surface.v_order, surface.v_count).size()) - 1;
+  for (const double k : c0_u) {
+    const int i = static_cast<int>(std::lower_bound(u_breaks.begin(), u_breaks.end(), k) - u_breaks.begin());
     if (i <= 0 || i >= columns) continue;
     Kink kink{k, 0.0};
     for (int j = 0; j < rows; ++j) {
@@ -308,6 +311,7 @@ double straddled_jump(const std::vector<Kink>& kinks, double a, double b, int n)
 struct SurfaceModel {
   double du = 0, dv = 0, u0 = 0, v0 = 0;
   SecondDerivativeBound m;
+  double speed = 0;  // the largest |S_u|, |S_v|
   std::vector<Kink> kinks_u, kinks_v;
 
   double deviation(int nu, int nv) const {
@@ -317,18 +321,15 @@ struct SurfaceModel {
   }
 };
 
-// The grid model of `surface`: the largest sampled normal curvatures over its Bezier patches (the
-// tessellator's own sampling, sample_patch_curvature.hpp), the kinks bounded from the control net, and
-// the largest sampled |S_u|, |S_v| (in `speed`).
-SurfaceModel surface_model(const NurbsSurface& surface, double& speed) {
+// The grid model of `surface`: the largest sampled normal curvatures and speeds over its Bezier patches
+// (the tessellator's own sampling, sample_patch_curvature.hpp) and the kinks bounded from the control net.
+SurfaceModel surface_model(const NurbsSurface& surface) {
   SurfaceModel model;
   model.u0 = surface.u_start(), model.v0 = surface.v_start();
   model.du = surface.u_end() - model.u0, model.dv = surface.v_end() - model.v0;
-  const SurfaceDeviationBound bound = surface_deviation_bound(surface);  // its breaks and C0 lines
   const SurfaceEvaluator evaluator(surface);
-  const auto& ub = bound.u_breaks;
-  const auto& vb = bound.v_breaks;
-  speed = 0.0;
+  const std::vector<double> ub = domain_breaks(surface.u_knots, surface.u_order, surface.u_count);
+  const std::vector<double> vb = domain_breaks(surface.v_knots, surface.v_order, surface.v_count);
   for (size_t j = 0; j + 1 < vb.size(); ++j)
     for (size_t i = 0; i + 1 < ub.size(); ++i) {
       const tessellation::PatchCurvature k =
@@ -336,13 +337,11 @@ SurfaceModel surface_model(const NurbsSurface& surface, double& speed) {
       model.m.uu = std::max(model.m.uu, k.uu);
       model.m.uv = std::max(model.m.uv, k.uv);
       model.m.vv = std::max(model.m.vv, k.vv);
-      speed = std::max({speed, k.su, k.sv});
+      model.speed = std::max({model.speed, k.su, k.sv});
     }
-  if (!bound.c0_u.empty()) model.kinks_u = surface_kinks_u(surface, bezier_patches(surface), bound);
-  if (!bound.c0_v.empty()) {
-    const NurbsSurface t = transposed(surface);
-    model.kinks_v = surface_kinks_u(t, bezier_patches(t), surface_deviation_bound(t));
-  }
+  model.kinks_u = surface_kinks_u(surface);
+  if (!c0_knots(surface.v_knots, surface.v_order, surface.v_count).empty())
+    model.kinks_v = surface_kinks_u(transposed(surface));
   return model;
 }
 
@@ -399,8 +398,7 @@ TessellationHints plan_tessellation_hints(const TrimmedSurface& face, double dev
     throw std::invalid_argument("plan_tessellation_hints: deviation must be positive and finite");
   TessellationHints hints;
   const NurbsSurface& s = face.surface;
-  double speed = 0.0;  // largest |S_u|, |S_v|
-  const SurfaceModel model = surface_model(s, speed);
+  const SurfaceModel model = surface_model(s);
   // Sampled curvatures: aimed below D by the planning margin.
   const double target = tessellation::kPlanningMargin * deviation;
   const int def_u = 2 * s.u_count, def_v = 2 * s.v_count;
@@ -425,7 +423,7 @@ TessellationHints plan_tessellation_hints(const TrimmedSurface& face, double dev
   }
   // Trimming chords: (u,v) error e moves the surface point by <= sqrt(2) L |e| (L sampled, so the
   // same margin).
-  const double l = speed;
+  const double l = model.speed;
   const double uv_target = l > 0.0 ? target / (std::sqrt(2.0) * l) : std::numeric_limits<double>::infinity();
   for (const auto& loop : face.loops) {
     std::vector<int> counts;

@@ -75,11 +75,12 @@ int run_part(const BatchOptions& options, const LibraryPart& part, const fs::pat
     for (const auto& target : options.targets) {
       if (record.failed) break;
       request.output = stem.string() + "." + target;
-      Scene written;  // kept for the record's figures
       ConversionLog log;
-      if (!options.measure) log.written = [&](const Scene& scene) { written = scene; };
-      const ConversionResult result = convert_loaded(request, loaded, log);
-      if (!options.measure) add_written_file(record, target, request.output, written, result);
+      if (!options.measure)
+        log.written = [&](const Scene& written, const ConversionResult& result) {
+          add_written_file(record, target, request.output, written, result);
+        };
+      convert_loaded(request, loaded, log);
     }
   } catch (const std::exception& error) {
     record = failed_record(part.relative, record_error(error.what(), input));
