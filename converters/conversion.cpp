@@ -6,6 +6,7 @@
 #include "converters/arguments.hpp"
 #include "core/bounding_box.hpp"
 #include "core/number_format.hpp"
+#include "core/world_scale.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/vrml/viewpoint.hpp"
 
@@ -111,11 +112,17 @@ ConversionResult convert_loaded(const ConversionRequest& request, const LoadedIn
     m.report = meshed.report;
     written = std::move(meshed.meshes);
     result.mesh = m;
-    result.deviation_bound = m.report.certified_deviation + m.quantisation_budget;
-    result.deviation_basis = m.report.uncertified_triangles > 0
-                                 ? "the tessellator's certificate of its certified triangles (some are not)"
-                                 : "bound: the tessellator's certificate";
-    if (m.quantised) result.deviation_basis += " plus the quantisation budget";
+    // The certificate holds in each face's own coordinates; a placement that stretches stretches it.
+    const double stretch = largest_world_scale(written);
+    if (m.report.uncertified_triangles > 0) {
+      result.deviation_basis = "no bound: " + std::to_string(m.report.uncertified_triangles) +
+                               " triangles are not certified";
+    } else {
+      result.deviation_bound = stretch * m.report.certified_deviation + m.quantisation_budget;
+      result.deviation_basis = "bound: the tessellator's certificate";
+      if (stretch > 1 + 1e-9) result.deviation_basis += " times the placement's largest stretch";
+      if (m.quantised) result.deviation_basis += " plus the quantisation budget";
+    }
   } else if (format.compact && !request.exact_nurbs) {
     CompactReport report;
     written = compact_scene(source, tolerance, &report);

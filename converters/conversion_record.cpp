@@ -55,8 +55,9 @@ void add_written_file(PartRecord& record, const std::string& key, const std::str
     f.floats = storage.total_floats();
     f.integers = storage.polygon_corners;
   }
-  f.deviation = result.deviation_bound;
+  f.deviation = result.deviation_bound;  // NaN where no bound is known: the record says not known
   f.deviation_basis = result.deviation_basis;
+  f.deviation_kind = DeviationKind::bound;
   record.representations.push_back(f);
 }
 

@@ -14,9 +14,9 @@
 #include "report/smallest_compressed_mesh.hpp"
 #include "report/nurss_figures.hpp"
 #include "formats/nurss/nurss_text.hpp"
-#include "analysis/measure/paired_scene_deviation.hpp"
 #include "report/report_formats.hpp"
 #include "report/storage_crossover.hpp"
+#include "analysis/mesh/largest_corner_move.hpp"
 #include "analysis/mesh/scene_triangles.hpp"
 #include "analysis/mesh/weld_exact.hpp"
 #include "converters/file_formats.hpp"
@@ -27,6 +27,7 @@
 #include "core/bounding_box.hpp"
 #include "core/geometry_error.hpp"
 #include "core/number_format.hpp"
+#include "core/world_scale.hpp"
 #include "formats/cnb/cnb_reader.hpp"
 #include "formats/cnb/cnb_writer.hpp"
 #include "formats/common/file_io.hpp"
@@ -163,31 +164,55 @@ void count_mesh_file(const Scene& read_back, bool soup, RepresentationFigures& f
   });
 }
 
-// `as_read` gets the file's triangles in world coordinates, unwelded.
-RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, const Scene& nurbs,
-                                   TriangleMesh& as_read) {
+// The certified mesh at D (`meshed`, of `faces`; `written` = its triangles in world coordinates) written
+// as `file`. The deviation is a bound when every triangle is certified: the certificate, stretched by the
+// placements, plus the largest move of a corner between the mesh written and the file read back
+// (analysis/mesh/largest_corner_move). With uncertified triangles, each face's triangles are measured
+// against that face (sampled). `as_read` gets the file's triangles in world coordinates, unwelded.
+RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, const CertifiedMesh& meshed,
+                                   const Scene& faces, const TriangleMesh& written, TriangleMesh& as_read) {
   RepresentationFigures f{file.key, file.label, RepresentationKind::mesh, 0, 0, 0, 0, 0, ""};
   measure_bytes(path, f);
   const Scene read_back = read_scene(path.string());
   count_mesh_file(read_back, std::string(file.extension) == ".stl", f);
   as_read = scene_triangles(read_back);
-  f.deviation = measure_deviation(as_read, nurbs).overall.max;
-  f.deviation_basis = "measured after read-back (two-sided, sampled)";
+  const std::optional<double> moved = largest_corner_move(written, as_read);
+  if (!moved) {
+    f.deviation_basis = "not known: the file read back has " + std::to_string(as_read.triangles.size()) +
+                        " triangles where " + std::to_string(written.triangles.size()) + " were written";
+  } else if (meshed.report.uncertified_triangles == 0) {
+    const double certificate = largest_world_scale(meshed.meshes) * meshed.report.certified_deviation;
+    f.deviation = certificate + *moved;
+    f.deviation_kind = DeviationKind::bound;
+    f.deviation_basis = "bound: the tessellator's certificate " + report_number(certificate) +
+                        " plus the largest vertex move through the file " + report_number(*moved);
+  } else {
+    f.deviation = measure_deviation_by_face(as_read, meshed.meshes, faces).overall.max;
+    f.deviation_basis = "measured face by face after read-back (two-sided, sampled): " +
+                        std::to_string(meshed.report.uncertified_triangles) + " triangles are not certified";
+  }
   return f;
 }
 
-// Our binary NURBS (.cnb) of the compact form within D, read back; the deviation is measured by sampling
-// both scenes at the same parameters (analysis/measure/paired_scene_deviation).
-void add_compact_binary(PartRecord& record, const Scene& compact, const Folder& folder, const std::string& stem) {
+// Our binary NURBS (.cnb) of the compact form (moved by at most `tolerance`) quantised within D, as
+// `convert --deviation D` writes it, read back. The deviation is the writer's bound (formats/cnb/
+// cnb_quantisation.hpp: control points, trims and weights) plus the compact form's.
+void add_compact_binary(PartRecord& record, const Scene& compact, double tolerance, const Folder& folder,
+                        const std::string& stem) {
   const fs::path path = folder.file(stem + "-compact", ".cnb");
-  write_scene(path.string(), compact, convert_options(record, compact, path, record.deviation));
+  CnbOptions options;
+  options.max_deviation = record.deviation;
+  CnbWriteReport written;
+  write_file_atomically(path.string(), write_cnb(compact, options, &written));
   RepresentationFigures f{"cnb", "cadnurbs binary NURBS (.cnb) within D", RepresentationKind::nurbs, 0, 0, 0, 0, 0, ""};
   const Scene decoded = read_cnb(measure_bytes(path, f), path.string());
   const NurbsStorage storage = nurbs_storage(decoded);
   f.floats = storage.total_floats();
   f.integers = storage.polygon_corners;
-  f.deviation = paired_scene_deviation(compact, decoded).max();
-  f.deviation_basis = "measured after decoding (both scenes sampled at the same parameters)";
+  f.deviation = written.deviation_bound() + tolerance;
+  f.deviation_kind = DeviationKind::bound;
+  f.deviation_basis = "bound: the quantisation's " + report_number(written.deviation_bound()) +
+                      " plus the written precision of the compact form";
   record.representations.push_back(f);
 }
 
@@ -205,7 +230,9 @@ void add_nurss(PartRecord& record, const Scene& scene, const Folder& folder, con
   f.floats = storage.floats;
   f.integers = storage.connectivity_integers;
   f.deviation = figures->whole.overall.max;
-  f.deviation_basis = "limit mesh at " + std::to_string(figures->levels) + " levels measured against the NURBS; " +
+  // One subdivision surface stands for several faces, so it is measured against them together.
+  f.deviation_basis = "measured (sampled): limit mesh at " + std::to_string(figures->levels) +
+                      " levels against the NURBS; " +
                       report_number(figures->away_from_ngons.mesh_to_surface.max) + " away from the n-gon faces";
   record.representations.push_back(f);
   Scene limit;
@@ -226,8 +253,10 @@ void add_encoded_meshes(PartRecord& record, const Scene& faces, const Folder& fo
   std::vector<MeshCodec> codecs;
   for (const auto& file : kEncodedMeshFiles) codecs.push_back(file.codec);
   std::vector<MeshEncodingFigures> encoded;
+  MeshEncodingOptions options;
+  options.measure_after_decoding = false;  // the bound is replayed and checked after decoding
   try {
-    encoded = encode_mesh_within(faces, record.deviation, codecs);
+    encoded = encode_mesh_within(faces, record.deviation, codecs, options);
   } catch (const std::exception& e) {
     record.warnings.push_back(std::string("compressed meshes not measured: ") + e.what());
     return;
@@ -241,10 +270,12 @@ void add_encoded_meshes(PartRecord& record, const Scene& faces, const Folder& fo
     const MeshStorage storage = mesh_storage(decoded);
     f.floats = storage.indexed_floats;
     f.integers = storage.indexed_integers;
-    f.deviation = encoded[i].measured.overall.max;
-    f.deviation_basis = "measured after decoding (two-sided, sampled); bound " +
-                        std::to_string(encoded[i].deviation_bound) + " (" + std::to_string(encoded[i].position_bits) +
-                        " bits)";
+    f.deviation = encoded[i].deviation_bound;
+    f.deviation_kind = DeviationKind::bound;
+    f.deviation_basis = "bound: the tessellator's certificate " + report_number(encoded[i].certified_deviation) +
+                        " plus the largest vertex move of the " + std::to_string(encoded[i].position_bits) +
+                        "-bit quantisation " + report_number(encoded[i].displacement) +
+                        " (replayed, and checked after decoding)";
     record.representations.push_back(f);
   }
 }
@@ -313,8 +344,15 @@ void measure_mesh_input(PartRecord& record, const Scene& scene, const Folder& fo
     measure_bytes(path, f);
     const Scene read_back = read_scene(path.string());
     count_mesh_file(read_back, std::string(file.extension) == ".stl", f);
-    f.deviation = mesh_distance(scene_triangles(read_back), input).overall.max;
-    f.deviation_basis = "read back against the input mesh (two-sided, sampled)";
+    const TriangleMesh as_read = scene_triangles(read_back);
+    if (const auto moved = largest_corner_move(input, as_read)) {
+      f.deviation = *moved;
+      f.deviation_kind = DeviationKind::bound;
+      f.deviation_basis = "bound: the largest vertex move through the file";
+    } else {
+      f.deviation = mesh_distance(as_read, input).overall.max;
+      f.deviation_basis = "measured (sampled, two-sided) against the input mesh: the file did not keep its triangles";
+    }
     record.representations.push_back(f);
   }
 
@@ -332,7 +370,7 @@ void measure_mesh_input(PartRecord& record, const Scene& scene, const Folder& fo
   f.integers = 3L * static_cast<long>(read_back.triangles.size()) + 2L * static_cast<long>(read_back.crease_edges.size()) +
                static_cast<long>(read_back.corner_vertices.size());
   f.deviation = fit.limit_distance.max;
-  f.deviation_basis = "limit surface (" + std::to_string(request.levels) + " levels) against the input, two-sided, RMS " +
+  f.deviation_basis = "measured (sampled): limit surface (" + std::to_string(request.levels) + " levels) against the input, two-sided, RMS " +
                       report_number(fit.limit_distance.rms) + "; a quadric decimation with as many vertices: RMS " +
                       report_number(fit.qem_distance.rms) + ", max " + report_number(fit.qem_distance.max);
   record.representations.push_back(f);
@@ -352,7 +390,7 @@ void measure_mesh_input(PartRecord& record, const Scene& scene, const Folder& fo
 }
 
 // The compact X3D NURBS of the scene with knots removed within `simplify` (convert --simplify): its
-// deviation is simplified_scene's certified one plus the written precision. When the certificate exceeds
+// deviation is simplified_scene's (sampled face by face) plus the written precision. When the certificate exceeds
 // `simplify` (convert would refuse), the row is left out with a note.
 void add_simplified(PartRecord& record, const Scene& scene, double tolerance, double simplify, const Folder& folder,
                     const std::string& stem) {
@@ -374,8 +412,10 @@ void add_simplified(PartRecord& record, const Scene& scene, double tolerance, do
   f.floats = read_back.total_floats();
   f.integers = read_back.polygon_corners;
   f.deviation = simplified.certified_deviation + tolerance;
-  f.deviation_basis = "certified: " + std::to_string(simplified.knots.knots_removed) +
-                      " knots removed, the faces measured against the source's mesh, plus the written precision";
+  // simplified_scene samples each changed face against its certified mesh: measured, face by face.
+  f.deviation_basis = "measured face by face (sampled): " + std::to_string(simplified.knots.knots_removed) +
+                      " knots removed, each changed face's mesh within D/4 against the face simplified, plus "
+                      "that mesh's certificate and the written precision";
   record.representations.push_back(f);
 }
 
@@ -409,13 +449,14 @@ PartRecord measure(const std::string& input, const BrepTranslation& loaded, cons
     f.floats = read_back.total_floats();
     f.integers = read_back.polygon_corners;
     f.deviation = file.compact ? tolerance : 0.5 * tolerance;
+    f.deviation_kind = DeviationKind::bound;
     f.deviation_basis = file.compact ? "bound: nothing moved by more than the written precision"
                                      : "bound: half the written precision (rounding)";
     record.representations.push_back(f);
   }
 
   if (options.simplify_mm > 0) add_simplified(record, scene, tolerance, options.simplify_mm / scene.unit.millimetres, folder, stem);
-  add_compact_binary(record, compact, folder, stem);
+  add_compact_binary(record, compact, tolerance, folder, stem);
   add_nurss(record, scene, folder, stem);
 
   const CertifiedMesh meshed = certified_mesh(loaded, scene, record.deviation);
@@ -423,12 +464,14 @@ PartRecord measure(const std::string& input, const BrepTranslation& loaded, cons
   if (meshed.report.uncertified_triangles > 0)
     record.warnings.push_back(std::to_string(meshed.report.uncertified_triangles) +
                               " triangles of the mesh at D could not be certified");
+  const TriangleMesh mesh_written = scene_triangles(meshed.meshes);
   for (const auto& file : kMeshFiles) {
     const fs::path path = folder.file(stem + "-mesh", file.extension);
     TriangleMesh as_read;
     const bool written = measured_or_noted(record, file.label, path, [&] {
       write_scene(path.string(), meshed.meshes, convert_options(record, scene, path, record.deviation));
-      record.representations.push_back(mesh_figures(file, path, scene, as_read));
+      record.representations.push_back(
+          mesh_figures(file, path, meshed, meshed.sewn ? meshed.faces : scene, mesh_written, as_read));
     });
     // The indexed figures: the first file's mesh (the IndexedFaceSet) with its shared vertices welded.
     if (written && record.mesh.vertices == 0) record.mesh = mesh_storage(weld_exact(as_read));

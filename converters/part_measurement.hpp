@@ -1,7 +1,8 @@
 #pragma once
 // The report's pipeline for one part: read it, write every representation the report compares into a
 // folder, read each file back, and measure it (report/storage_record.hpp). Every byte count is a
-// file's size on disk; every mesh deviation is measured on what reading the file back gives.
+// file's size on disk; every deviation is of what reading the file back gives: a bound wherever one
+// exists (a certificate, a written precision, a quantisation replayed), else measured face by face.
 #include <string>
 
 #include "report/html/report_html.hpp"

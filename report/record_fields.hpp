@@ -129,6 +129,13 @@ inline RepresentationKind representation_kind_named(const std::string& name) {
   throw std::invalid_argument("unknown representation kind '" + name + "'");
 }
 
+// The kind whose deviation_kind_name is `name`; throws std::invalid_argument for another name.
+inline DeviationKind deviation_kind_named(const std::string& name) {
+  for (const auto kind : {DeviationKind::bound, DeviationKind::measured})
+    if (name == deviation_kind_name(kind)) return kind;
+  throw std::invalid_argument("unknown deviation kind '" + name + "'");
+}
+
 // The descriptions. Function-local statics: built once, on first use.
 
 inline const JsonFields<NurbsStorage>& nurbs_storage_fields() {
@@ -175,6 +182,8 @@ inline const JsonFields<RepresentationFigures>& representation_fields() {
       value_field("floats", &Figures::floats),
       value_field("integers", &Figures::integers),
       nullable_number_field("deviation", &Figures::deviation),
+      {"deviation_kind", [](const Figures& f) { return WrittenJson(deviation_kind_name(f.deviation_kind)); },
+       [](const ReadJson& value, Figures& f) { f.deviation_kind = deviation_kind_named(value.get<std::string>()); }},
       value_field("deviation_basis", &Figures::deviation_basis),
   };
   return fields;

@@ -41,6 +41,11 @@ std::string cell(std::string text) {
 
 std::string report_number(double value, int digits) { return std::isnan(value) ? "-" : number_text(value, digits); }
 
+std::string labelled_deviation(const RepresentationFigures& figures) {
+  if (std::isnan(figures.deviation)) return "-";
+  return report_number(figures.deviation) + " " + deviation_kind_name(figures.deviation_kind);
+}
+
 const std::string& accounting_rule() {
   static const std::string rule =
       "Floats are counted as in seed 001, §6.1: NURBS = 4 per control point (x, y, z, w) + 1 per knot; trimming "
@@ -74,7 +79,8 @@ std::string report_csv(const std::vector<PartRecord>& records) {
       "input,status,error,unit,diagonal,deviation,control_points,knots,nurbs_floats,trim_floats,polygon_floats,"
       "mesh_vertices,mesh_triangles,mesh_indexed_floats,mesh_indexed_integers,mesh_soup_floats,"
       "mesh_certified_deviation";
-  for (const auto& k : keys) header += "," + k + ".bytes," + k + ".gzip_bytes," + k + ".deviation";
+  for (const auto& k : keys)
+    header += "," + k + ".bytes," + k + ".gzip_bytes," + k + ".deviation," + k + ".deviation_kind";
   // A failed part fills the columns after its error with empty fields.
   const auto columns_after_error = std::count(header.begin(), header.end(), ',') - 2;
   std::ostringstream out;
@@ -91,9 +97,10 @@ std::string report_csv(const std::vector<PartRecord>& records) {
         << "," << r.mesh.soup_floats << "," << r.mesh_certified_deviation;
     for (const auto& k : keys) {
       if (const auto* f = find_representation(r, k))
-        out << "," << f->bytes << "," << f->gzip_bytes << "," << (std::isnan(f->deviation) ? "" : report_number(f->deviation, 8));
+        out << "," << f->bytes << "," << f->gzip_bytes << ","
+            << (std::isnan(f->deviation) ? "," : report_number(f->deviation, 8) + "," + deviation_kind_name(f->deviation_kind));
       else
-        out << ",,,";
+        out << ",,,,";
     }
     out << "\n";
   }
@@ -140,7 +147,7 @@ std::string report_markdown(const std::vector<PartRecord>& records) {
            "|---|---|---|---|---|---|---|\n";
     for (const auto& f : r.representations)
       out << "| " << f.label << " | " << f.bytes << " | " << f.gzip_bytes << " | " << f.floats << " | " << f.integers
-          << " | " << report_number(f.deviation) << " | " << cell(f.deviation_basis) << " |\n";
+          << " | " << labelled_deviation(f) << " | " << cell(f.deviation_basis) << " |\n";
     if (!r.curve.empty()) {
       out << "\nStorage against accuracy (certified mesh at each D, delivered = smaller of raw and gzip'd):\n\n"
              "| representation | D | bytes | gzip'd | floats |\n|---|---|---|---|---|\n";

@@ -30,6 +30,10 @@ std::string report_csv(const std::vector<PartRecord>& records);
 // A figure for a table: number_text with `digits` significant digits, "-" for NaN (not measured).
 std::string report_number(double value, int digits = 4);
 
+// A representation's deviation as every table prints it, with how it is known: "0.0072 bound",
+// "0.0081 measured", "-" when not known.
+std::string labelled_deviation(const RepresentationFigures& figures);
+
 // The sentence that states the accounting (seed 001, §6.1), as every layout prints it.
 const std::string& accounting_rule();
 

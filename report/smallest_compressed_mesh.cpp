@@ -179,7 +179,7 @@ std::vector<MeshEncodingFigures> encode_mesh_within(const Scene& scene, double m
   }
   std::vector<MeshEncodingFigures> out;
   for (auto& b : best) {
-    b->figures.measured = measure_deviation(b->decoded, scene, options.measure);
+    if (options.measure_after_decoding) b->figures.measured = measure_deviation(b->decoded, scene, options.measure);
     out.push_back(std::move(b->figures));
   }
   return out;

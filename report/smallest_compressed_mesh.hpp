@@ -39,6 +39,7 @@ struct MeshEncodingOptions {
   std::vector<double> fractions = {0.5, 0.7, 0.85};  // f, each in (0, 1)
   int draco_speed = 0;                               // Draco's speed option, 0 = best compression
   DeviationOptions measure = {};                     // sampling of the measurement after decoding
+  bool measure_after_decoding = true;                // false: the bound alone (`measured` stays empty)
 };
 
 struct MeshEncodingFigures {
@@ -53,7 +54,7 @@ struct MeshEncodingFigures {
   double displacement_budget = 0;    // D - c: what quantisation may move a vertex
   double displacement = 0;           // largest vertex displacement by quantisation (exact)
   double deviation_bound = 0;        // c + displacement <= D
-  DeviationMeasure measured;         // the decoded mesh against the NURBS, two-sided
+  DeviationMeasure measured;         // the decoded mesh against the NURBS, two-sided (if asked for)
   long vertices = 0, triangles = 0;  // of the decoded mesh
   TriangleMesh certified_mesh;       // the welded tessellation that was quantised (world coordinates)
 };

@@ -18,6 +18,10 @@ const char* representation_kind_name(RepresentationKind kind) {
   return "";
 }
 
+const char* deviation_kind_name(DeviationKind kind) {
+  return kind == DeviationKind::bound ? "bound" : "measured";
+}
+
 const RepresentationFigures* smallest_representation(const PartRecord& record, RepresentationKind kind) {
   const RepresentationFigures* best = nullptr;
   for (const auto& r : record.representations)

@@ -1,6 +1,7 @@
 #pragma once
 // What the report knows about one part: the thesis's float counts and, for every representation, the
-// bytes of a file actually written and read back, with the deviation measured after reading it back.
+// bytes of a file actually written and read back, with its deviation from the part (a bound wherever one
+// exists, else measured face by face) and which of the two it is.
 // One record per part; report_markdown / report_json / report_csv lay records out (schema: docs/report.md).
 #include <limits>
 #include <string>
@@ -14,6 +15,14 @@ namespace cadnurbs {
 // Loop subdivision control mesh fitted to a mesh input (against the meshes users have).
 enum class RepresentationKind { nurbs, mesh, nurss, loop };
 
+// How a deviation figure is known. bound: it cannot be exceeded (the tessellator's certificate, a
+// written precision, a quantisation replayed vertex by vertex, a codec's proven bound). measured: an
+// attained value from sampling, face by face (the truth may exceed it between samples).
+enum class DeviationKind { bound, measured };
+
+// "bound" or "measured", as the JSON, CSV and pages say it.
+const char* deviation_kind_name(DeviationKind kind);
+
 // One written file.
 struct RepresentationFigures {
   std::string key;    // stable identifier: "x3dv-compact", "wrl-mesh", "draco", ...
@@ -23,10 +32,12 @@ struct RepresentationFigures {
   long gzip_bytes = 0;  // that file gzip'd at level 9 (for a file that is already compressed: the same)
   long floats = 0;      // thesis accounting of what the file holds (storage_accounting.hpp)
   long integers = 0;    // indices, polygon corners, connectivity
-  // Largest distance between what reading the file back gives and the exact surfaces of the part,
-  // measured (analysis/measure/measure_deviation) after reading it back; NaN where it was not measured.
+  // Largest distance between what reading the file back gives and the exact surfaces of the part (for a
+  // mesh input: the input mesh), a bound wherever one exists, else measured face by face after reading
+  // it back; NaN where it is not known.
   double deviation = std::numeric_limits<double>::quiet_NaN();
-  std::string deviation_basis;  // how `deviation` was obtained, for people ("measured after read-back", ...)
+  std::string deviation_basis;  // how `deviation` was obtained, for people
+  DeviationKind deviation_kind = DeviationKind::measured;
 };
 
 // Bytes of one representation at one maximum deviation (the storage-against-accuracy curve).

@@ -1,6 +1,5 @@
 #include "analysis/knots/simplify_scene.hpp"
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -9,6 +8,7 @@
 
 #include "analysis/knots/knot_removal.hpp"
 #include "core/knot_vector.hpp"
+#include "core/world_scale.hpp"
 
 namespace cadnurbs {
 
@@ -63,7 +63,7 @@ struct Simplifier {
   void node(SceneNode& n, const Eigen::Affine3d& parent) {
     const Eigen::Affine3d world = parent * n.transform;
     // A placed point moves by at most the largest singular value times its local move.
-    const double stretch = Eigen::JacobiSVD<Eigen::Matrix3d>(world.linear()).singularValues()(0);
+    const double stretch = transform_scale(world);
     const double tolerance = stretch > 0 ? max_move / stretch : 0.0;
     for (auto& shape : n.shapes) {
       int removed = 0;

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <string>
 #include <thread>
 #include <utility>
 
@@ -462,6 +464,79 @@ DeviationMeasure measure_deviation(const TriangleMesh& mesh, const Scene& scene,
     if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry)) surfaces.push_back(placed(*t, world));
   });
   return Measurer(mesh, std::move(surfaces), options).run();
+}
+
+namespace {
+
+// The triangles of every shape of `meshes`, in scene_triangles' order (fanned polygons included).
+std::vector<std::size_t> triangles_per_shape(const Scene& meshes) {
+  std::vector<std::size_t> counts;
+  for_each_shape(meshes, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
+    if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry)) counts.push_back(mesh->triangles.size());
+    else if (const auto* polygons = std::get_if<PolygonMesh>(&shape.geometry))
+      counts.push_back(triangulated(*polygons).triangles.size());
+    else counts.push_back(0);
+  });
+  return counts;
+}
+
+// Triangles [first, first + count) of `mesh` with only the positions they use.
+TriangleMesh triangle_range(const TriangleMesh& mesh, std::size_t first, std::size_t count) {
+  TriangleMesh out;
+  std::vector<int> index(mesh.positions.size(), -1);
+  for (std::size_t t = first; t < first + count; ++t) {
+    std::array<int, 3> corners{};
+    for (int k = 0; k < 3; ++k) {
+      int& i = index[mesh.triangles[t][k]];
+      if (i < 0) {
+        i = static_cast<int>(out.positions.size());
+        out.positions.push_back(mesh.positions[mesh.triangles[t][k]]);
+      }
+      corners[k] = i;
+    }
+    out.triangles.push_back(corners);
+  }
+  return out;
+}
+
+void add_stats(DeviationStats& total, double& squares, const DeviationStats& face) {
+  total.max = std::max(total.max, face.max);
+  squares += face.rms * face.rms * static_cast<double>(face.samples);
+  total.samples += face.samples;
+}
+
+}  // namespace
+
+DeviationMeasure measure_deviation_by_face(const TriangleMesh& mesh, const Scene& meshes, const Scene& faces,
+                                           const DeviationOptions& options) {
+  const std::vector<std::size_t> counts = triangles_per_shape(meshes);
+  std::vector<std::optional<TrimmedSurface>> surfaces;
+  for_each_shape(faces, [&](const Shape& shape, const Eigen::Affine3d& world, const Colour&) {
+    const auto* t = std::get_if<TrimmedSurface>(&shape.geometry);
+    surfaces.push_back(t ? std::optional<TrimmedSurface>(placed(*t, world)) : std::nullopt);
+  });
+  std::size_t total = 0;
+  for (std::size_t c : counts) total += c;
+  if (surfaces.size() != counts.size())
+    throw GeometryError("measure", std::to_string(counts.size()) + " meshes for " + std::to_string(surfaces.size()) +
+                                       " shapes: not a tessellation of these faces");
+  if (total != mesh.triangles.size())
+    throw GeometryError("measure", "the mesh has " + std::to_string(mesh.triangles.size()) + " triangles where the " +
+                                       "tessellation has " + std::to_string(total));
+  DeviationMeasure out;
+  double squares[3] = {0, 0, 0};
+  std::size_t first = 0;
+  for (std::size_t k = 0; k < counts.size(); first += counts[k], ++k) {
+    if (!surfaces[k] || counts[k] == 0) continue;
+    const DeviationMeasure face = measure_deviation(triangle_range(mesh, first, counts[k]), *surfaces[k], options);
+    add_stats(out.mesh_to_surface, squares[0], face.mesh_to_surface);
+    add_stats(out.surface_to_mesh, squares[1], face.surface_to_mesh);
+    add_stats(out.overall, squares[2], face.overall);
+  }
+  DeviationStats* stats[3] = {&out.mesh_to_surface, &out.surface_to_mesh, &out.overall};
+  for (int i = 0; i < 3; ++i)
+    if (stats[i]->samples > 0) stats[i]->rms = std::sqrt(squares[i] / static_cast<double>(stats[i]->samples));
+  return out;
 }
 
 }  // namespace cadnurbs

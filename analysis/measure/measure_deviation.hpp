@@ -38,4 +38,15 @@ DeviationMeasure measure_deviation(const TriangleMesh& mesh, const TrimmedSurfac
 // of `scene` (placed by their world transforms).
 DeviationMeasure measure_deviation(const TriangleMesh& mesh, const Scene& scene, const DeviationOptions& options = {});
 
+// Face by face, never across faces: `mesh` is the tessellation `meshes` of `faces` (one mesh shape per
+// shape of `faces`, in the same order, as tessellate_to_deviation gives it) as a file gave it back, in
+// world coordinates and in the order scene_triangles(meshes) has its triangles. The triangles of each
+// face are measured against that face alone, so a point is never projected onto a neighbouring face
+// (which can read a distance far beyond the face's own). Shapes of `faces` that are not trimmed surfaces
+// (meshes a reader fell back to) have nothing exact to be measured against and are left out. The result:
+// the largest maxima, the RMS over all samples. Throws GeometryError (entity "measure") when `mesh`
+// does not have the triangles of `meshes` or the two scenes do not have the same shapes.
+DeviationMeasure measure_deviation_by_face(const TriangleMesh& mesh, const Scene& meshes, const Scene& faces,
+                                           const DeviationOptions& options = {});
+
 }  // namespace cadnurbs

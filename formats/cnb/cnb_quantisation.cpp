@@ -1,38 +1,21 @@
 #include "formats/cnb/cnb_quantisation.hpp"
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "core/world_scale.hpp"
 #include "formats/cnb/cnb_numbers.hpp"
 
 namespace cadnurbs::cnb {
 
-double transform_scale(const Eigen::Affine3d& transform) {
-  Eigen::JacobiSVD<Eigen::Matrix3d> svd(transform.linear());
-  return svd.singularValues()(0);
-}
-
 namespace {
-void largest_scale(const SceneNode& node, const Eigen::Affine3d& parent, double& largest) {
-  const Eigen::Affine3d world = parent * node.transform;
-  if (!node.shapes.empty()) largest = std::max(largest, transform_scale(world));
-  for (const auto& child : node.children) largest_scale(child, world, largest);
-}
-
 void check(const CnbOptions& o) {
   if (!(o.max_deviation > 0) || !std::isfinite(o.max_deviation))
     throw std::invalid_argument("cnb: the maximum deviation must be positive and finite");
   if (!(o.trim_share > 0 && o.trim_share < 1)) throw std::invalid_argument("cnb: trim_share must lie in (0, 1)");
 }
 }  // namespace
-
-double largest_world_scale(const Scene& scene) {
-  double largest = 0.0;
-  largest_scale(scene.root, Eigen::Affine3d::Identity(), largest);
-  return largest > 0.0 ? largest : 1.0;
-}
 
 double point_step(const Scene& scene, const CnbOptions& options) {
   check(options);

@@ -15,13 +15,10 @@
 // with 2·L·s·scale <= trim_share·D. On the decoded surface the boundary moves by at most the sum of the
 // two bounds, <= D.
 #include "core/scene.hpp"
+#include "core/world_scale.hpp"
 #include "formats/cnb/cnb_options.hpp"
 
 namespace cadnurbs::cnb {
-
-// Largest singular value of the linear part of every node's world transform that holds shapes (1 for
-// a scene without scaling).
-double largest_world_scale(const Scene& scene);
 
 // q as above. Throws std::invalid_argument for D or trim_share out of range.
 double point_step(const Scene& scene, const CnbOptions& options);
@@ -44,8 +41,5 @@ bool quantises_weights(const NurbsSurface& surface);
 // h for a world budget `budget`, and the world bound ε/(1 - ε)·diagonal·scale that h gives.
 double weight_log_step(const NurbsSurface& surface, double budget, double world_scale);
 double weight_bound(const NurbsSurface& surface, double log_step, double world_scale);
-
-// Largest singular value of a transform's linear part.
-double transform_scale(const Eigen::Affine3d& transform);
 
 }  // namespace cadnurbs::cnb

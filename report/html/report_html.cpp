@@ -355,7 +355,7 @@ std::string part_section(const std::vector<PartRecord>& records, std::size_t ind
   for (const auto& f : r.representations)
     out << "<tr><td>" << escape_html(f.label) << "</td><td class=\"n\">" << grouped(f.bytes) << "</td><td class=\"n\">"
         << grouped(f.gzip_bytes) << "</td><td class=\"n\">" << grouped(f.floats) << "</td><td class=\"n\">"
-        << grouped(f.integers) << "</td><td class=\"n\">" << report_number(f.deviation) << "</td><td>"
+        << grouped(f.integers) << "</td><td class=\"n\">" << labelled_deviation(f) << "</td><td>"
         << escape_html(f.deviation_basis) << "</td></tr>\n";
   out << "</tbody></table>\n";
   if (!r.warnings.empty()) {

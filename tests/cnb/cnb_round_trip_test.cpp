@@ -229,14 +229,14 @@ TEST(CnbSteps, CoarsestTheBoundAllows) {
     CnbOptions options;
     options.max_deviation = d;
     const double q = cnb::point_step(scene, options);
-    const double scale = cnb::largest_world_scale(scene);
+    const double scale = largest_world_scale(scene);
     EXPECT_NEAR(q * std::sqrt(3.0) / 2.0 * scale, (1 - options.trim_share) * d, 1e-12 * d);
     EXPECT_GT(2 * q * std::sqrt(3.0) / 2.0 * scale, (1 - options.trim_share) * d);
     int faces = 0;
     for_each_shape(scene, [&](const Shape& s, const Eigen::Affine3d& world, const Colour&) {
       const auto* t = std::get_if<TrimmedSurface>(&s.geometry);
       if (!t || surface_derivative_bound(t->surface) == 0) return;
-      const double face_scale = cnb::transform_scale(world);
+      const double face_scale = transform_scale(world);
       const int e = cnb::trim_step_exponent(t->surface, options, face_scale);
       EXPECT_LE(cnb::trim_bound(t->surface, e, face_scale), options.trim_share * d);
       EXPECT_GT(cnb::trim_bound(t->surface, e + 1, face_scale), options.trim_share * d);

@@ -71,7 +71,8 @@ PartRecord capping_record(const std::string& nurbs_text, const Scene& scene, con
   faces.floats = mesh.storage.indexed_floats;
   faces.integers = mesh.storage.indexed_integers;
   faces.deviation = mesh.certified_deviation;
-  faces.deviation_basis = "the tessellator's certified bound";
+  faces.deviation_kind = DeviationKind::bound;
+  faces.deviation_basis = "bound: the tessellator's certificate";
   r.representations = {nurbs, faces};
 
   std::vector<BytesAtDeviation> points;
