@@ -49,25 +49,6 @@ std::string knot_vector_fault(const std::vector<double>& knots, int order, int c
   return {};
 }
 
-int find_knot_span(const std::vector<double>& knots, int order, int count, double t) {
-  const int p = order - 1;
-  const int n = count - 1;
-  if (t >= knots[n + 1]) {
-    // Last non-empty span.
-    int s = n;
-    while (s > p && knots[s] == knots[s + 1]) --s;
-    return s;
-  }
-  if (t <= knots[p]) {
-    int s = p;
-    while (s < n && knots[s] == knots[s + 1]) ++s;
-    return s;
-  }
-  // knots[span] <= t < knots[span+1]
-  auto it = std::upper_bound(knots.begin() + p, knots.begin() + n + 2, t);
-  return static_cast<int>(it - knots.begin()) - 1;
-}
-
 void basis_function_derivatives(const std::vector<double>& knots, int order, int span, double t, int max_derivative,
                                 double* ders, int stride) {
   const int p = order - 1;
@@ -86,19 +67,7 @@ void basis_function_derivatives(const std::vector<double>& knots, int order, int
   double* left = line;
   double* right = line + order;
   if (max_derivative == 0) {
-    // Values only (A2.2): one row instead of the triangle of A2.3.
-    ders[0] = 1.0;
-    for (int j = 1; j <= p; ++j) {
-      left[j] = t - knots[span + 1 - j];
-      right[j] = knots[span + j] - t;
-      double saved = 0.0;
-      for (int r = 0; r < j; ++r) {
-        const double temp = ders[r] / (right[r + 1] + left[j - r]);
-        ders[r] = saved + right[r + 1] * temp;
-        saved = left[j - r] * temp;
-      }
-      ders[j] = saved;
-    }
+    basis_function_values(knots.data(), order, span, t, ders, left, right);
     return;
   }
   double* a[2] = {line + 2 * order, line + 3 * order};

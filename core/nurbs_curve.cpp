@@ -45,20 +45,37 @@ std::vector<Eigen::Vector3d> curve_derivatives(const NurbsCurve& curve, double t
   return rational_curve_derivatives(homogeneous);
 }
 
-Eigen::Vector3d curve_point(const NurbsCurve& curve, double t) {
-  if (curve.order > kMaxStackOrder) return curve_derivatives(curve, t, 0)[0];
-  // The hot path of trim sampling and inversion: no allocation.
-  const int span = find_knot_span(curve.knots, curve.order, curve.count(), t);
-  double basis[kMaxStackOrder];
-  basis_function_derivatives(curve.knots, curve.order, span, t, 0, basis, kMaxStackOrder);
+namespace {
+
+// curve_point for an order known at compile time (0: the curve's), which unrolls the basis: the same
+// sums in the same order, so bit for bit the same point.
+template <int Order>
+Eigen::Vector3d point_of_order(const NurbsCurve& curve, double t) {
+  const int order = Order > 0 ? Order : curve.order;
+  const int span = find_knot_span(curve.knots, order, curve.count(), t);
+  double basis[kMaxStackOrder], left[kMaxStackOrder], right[kMaxStackOrder];
+  basis_function_values(curve.knots.data(), order, span, t, basis, left, right);
   Eigen::Vector4d homogeneous = Eigen::Vector4d::Zero();
-  for (int j = 0; j < curve.order; ++j) {
-    const int i = span - curve.order + 1 + j;
+  for (int j = 0; j < order; ++j) {
+    const int i = span - order + 1 + j;
     const double w = curve.weight(i);
     homogeneous.head<3>() += basis[j] * w * curve.points[i];
     homogeneous[3] += basis[j] * w;
   }
   return homogeneous.head<3>() / homogeneous[3];
+}
+
+}  // namespace
+
+Eigen::Vector3d curve_point(const NurbsCurve& curve, double t) {
+  if (curve.order > kMaxStackOrder) return curve_derivatives(curve, t, 0)[0];
+  // The hot path of trim sampling and inversion: no allocation; lines, conics and cubics unrolled.
+  switch (curve.order) {
+    case 2: return point_of_order<2>(curve, t);
+    case 3: return point_of_order<3>(curve, t);
+    case 4: return point_of_order<4>(curve, t);
+    default: return point_of_order<0>(curve, t);
+  }
 }
 
 NurbsCurve reversed(const NurbsCurve& curve) {

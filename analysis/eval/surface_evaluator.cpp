@@ -21,7 +21,8 @@ SurfaceEvaluator::SurfaceEvaluator(const NurbsSurface& s)
       v_count_(s.v_count),
       u_knots_(s.u_knots),
       v_knots_(s.v_knots),
-      rational_(s.is_rational()) {
+      rational_(s.is_rational()),
+      point_(point_function(s.u_order, s.v_order)) {
   if (s.u_order > kMax || s.v_order > kMax)
     throw GeometryError("surface evaluator", "order " + std::to_string(std::max(s.u_order, s.v_order)) +
                                                  " is above the supported " + std::to_string(kMax));
@@ -32,7 +33,46 @@ SurfaceEvaluator::SurfaceEvaluator(const NurbsSurface& s)
   }
 }
 
-Eigen::Vector3d SurfaceEvaluator::point(double u, double v) const { return jet(u, v, 0).s; }
+Eigen::Vector3d SurfaceEvaluator::point(double u, double v) const { return (this->*point_)(u, v); }
+
+// jet(u, v, 0).s without the derivative rows, for orders known at compile time (0: the surface's):
+// the same sums in the same order, so bit for bit the same point, at a fraction of the cost (the
+// certification's lattices and the trim sampling evaluate points only).
+template <int OU, int OV>
+Eigen::Vector3d SurfaceEvaluator::point_of_orders(double u, double v) const {
+  const int ou = OU > 0 ? OU : u_order_, ov = OV > 0 ? OV : v_order_;
+  u = std::clamp(u, u_start(), u_end());
+  v = std::clamp(v, v_start(), v_end());
+  const int us = find_knot_span(u_knots_, ou, u_count_, u);
+  const int vs = find_knot_span(v_knots_, ov, v_count_, v);
+  double nu[kMax], nv[kMax], left[kMax], right[kMax];
+  basis_function_values(u_knots_.data(), ou, us, u, nu, left, right);
+  basis_function_values(v_knots_.data(), ov, vs, v, nv, left, right);
+  Eigen::Vector4d h = Eigen::Vector4d::Zero();
+  const int i0 = us - ou + 1, j0 = vs - ov + 1;
+  for (int b = 0; b < ov; ++b) {
+    Eigen::Vector4d row = Eigen::Vector4d::Zero();
+    const Eigen::Vector4d* line = &homogeneous_[static_cast<size_t>(i0) + static_cast<size_t>(j0 + b) * u_count_];
+    for (int a = 0; a < ou; ++a) row += nu[a] * line[a];
+    h += nv[b] * row;
+  }
+  if (!rational_) return h.head<3>();
+  return h.head<3>() / h[3];
+}
+
+SurfaceEvaluator::PointFunction SurfaceEvaluator::point_function(int u_order, int v_order) {
+  // Planes (2 x 2), cylinders and cones (3 x 2), spheres and tori (3 x 3) as exact NURBS, and cubic
+  // B-splines (4 x 4) are most faces.
+  static constexpr PointFunction table[3][3] = {
+      {&SurfaceEvaluator::point_of_orders<2, 2>, &SurfaceEvaluator::point_of_orders<2, 3>,
+       &SurfaceEvaluator::point_of_orders<2, 4>},
+      {&SurfaceEvaluator::point_of_orders<3, 2>, &SurfaceEvaluator::point_of_orders<3, 3>,
+       &SurfaceEvaluator::point_of_orders<3, 4>},
+      {&SurfaceEvaluator::point_of_orders<4, 2>, &SurfaceEvaluator::point_of_orders<4, 3>,
+       &SurfaceEvaluator::point_of_orders<4, 4>}};
+  if (u_order >= 2 && u_order <= 4 && v_order >= 2 && v_order <= 4) return table[u_order - 2][v_order - 2];
+  return &SurfaceEvaluator::point_of_orders<0, 0>;
+}
 
 SurfaceJet SurfaceEvaluator::jet(double u, double v, int order) const {
   u = std::clamp(u, u_start(), u_end());

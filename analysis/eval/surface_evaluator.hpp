@@ -42,6 +42,12 @@ class SurfaceEvaluator {
   std::vector<double> u_knots_, v_knots_;
   std::vector<Eigen::Vector4d> homogeneous_;  // (w P, w), u fastest
   bool rational_;
+  using PointFunction = Eigen::Vector3d (SurfaceEvaluator::*)(double, double) const;
+  PointFunction point_;  // point_of_orders for this surface's orders
+
+  template <int OU, int OV>
+  Eigen::Vector3d point_of_orders(double u, double v) const;
+  static PointFunction point_function(int u_order, int v_order);
 };
 
 }  // namespace cadnurbs

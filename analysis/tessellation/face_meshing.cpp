@@ -13,6 +13,7 @@
 #include "analysis/eval/sample_trim_segment.hpp"
 #include "analysis/tessellation/segment_meets_box.hpp"
 #include "analysis/tessellation/surface_normal.hpp"
+#include "analysis/tessellation/surface_point_cache.hpp"
 #include "analysis/tessellation/triangle_certification.hpp"
 #include "core/geometry_error.hpp"
 #include "core/point_in_loops.hpp"
@@ -48,7 +49,8 @@ int index_at_or_below(const std::vector<double>& g, double x) {
 
 class FaceMesher {
  public:
-  FaceMesher(Face& face, double d, TessellationReport& report) : f_(face), e_(*face.eval), d_(d), report_(report) {}
+  FaceMesher(Face& face, double d, TessellationReport& report)
+      : f_(face), e_(*face.eval), points_(*face.eval, face.us.size() * face.vs.size()), d_(d), report_(report) {}
 
   void run() {
     us_ = f_.us;
@@ -61,6 +63,7 @@ class FaceMesher {
  private:
   Face& f_;
   const SurfaceEvaluator& e_;
+  SurfacePointCache points_;  // every point of the surface this face asks for, evaluated once
   double d_;
   TessellationReport& report_;
   std::vector<double> us_, vs_;  // grid parameters (knots included)
@@ -82,7 +85,7 @@ class FaceMesher {
 
   void set_vertex(int id, const Eigen::Vector2d& uv, const Eigen::Vector3d& point, std::optional<NodeId> node) {
     Vertex& v = vertices_[id];
-    v.uv = uv, v.point = point, v.error = e_.point(uv.x(), uv.y()) - point;
+    v.uv = uv, v.point = point, v.error = points_.point(uv.x(), uv.y()) - point;
     v.origin = node ? VertexOrigin::model : VertexOrigin::own;
     v.node = node.value_or(NodeId{});
   }
@@ -93,7 +96,7 @@ class FaceMesher {
       const int id = static_cast<int>(vertices_.size());
       const Eigen::Vector2d uv = dt_->uv(id);
       Vertex v;
-      v.uv = uv, v.point = e_.point(uv.x(), uv.y()), v.error = Eigen::Vector3d::Zero();
+      v.uv = uv, v.point = points_.point(uv.x(), uv.y()), v.error = Eigen::Vector3d::Zero();
       vertices_.push_back(v);
     }
   }
@@ -163,7 +166,7 @@ class FaceMesher {
         const auto below = std::lower_bound(cross.begin(), cross.end(), us_[i]) - cross.begin();
         if (below % 2 == 0) continue;
         const Eigen::Vector2d uv(us_[i], vs_[j]);
-        add_vertex(uv, e_.point(uv.x(), uv.y()), std::nullopt);
+        add_vertex(uv, points_.point(uv.x(), uv.y()), std::nullopt);
       }
     }
   }
@@ -247,7 +250,7 @@ class FaceMesher {
       for (const auto& [uv, near] : inserts) {
         const int id = dt_->insert(uv, near);
         sync_vertices();
-        if (vertices_[id].origin == VertexOrigin::pending) set_vertex(id, uv, e_.point(uv.x(), uv.y()), std::nullopt);
+        if (vertices_[id].origin == VertexOrigin::pending) set_vertex(id, uv, points_.point(uv.x(), uv.y()), std::nullopt);
       }
       settle_pending();
       if (dt_->vertex_count() == before) break;
@@ -263,7 +266,7 @@ class FaceMesher {
   // Certifies triangle t (key h) unless it was already settled; the verdict when it fails.
   std::optional<TriangleVerdict> certify_once(const std::array<int, 3>& t, std::uint64_t h) {
     if (certified_.count(h)) return std::nullopt;
-    const TriangleVerdict v = certify_triangle(e_, f_.bound, vertices_[t[0]], vertices_[t[1]], vertices_[t[2]], d_);
+    const TriangleVerdict v = certify_triangle(points_, f_.bound, vertices_[t[0]], vertices_[t[1]], vertices_[t[2]], d_);
     if (!v.ok) return v;
     certified_.insert(h);
     report_.certified_deviation = std::max(report_.certified_deviation, v.bound);

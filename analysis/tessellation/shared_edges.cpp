@@ -175,10 +175,19 @@ void SharedEdges::append_use(Face& f, const CurveUse& use, std::vector<LoopPoint
     }
     return;
   }
-  if (!invert_shared_samples(f, use, curve, start_node, node_at(use, CurveEndSide::end), nodes_, d_, out)) {
-    ++report_.unshared_edge_uses;
-    own_samples(f, s, out);
+  const int splits = use.curve.index < static_cast<int>(splits_.size()) ? splits_[use.curve.index] : 0;
+  Located& located = located_[{use.face, use.loop, use.segment}];
+  if (located.splits != splits) {
+    located.points.clear();
+    if (!invert_shared_samples(f, use, curve, start_node, node_at(use, CurveEndSide::end), nodes_, d_, located.points)) {
+      located.splits = -1;  // not kept: sampled on its own, with nodes of its own, each time
+      ++report_.unshared_edge_uses;
+      own_samples(f, s, out);
+      return;
+    }
+    located.splits = splits;
   }
+  out.insert(out.end(), located.points.begin(), located.points.end());
 }
 
 // The segment sampled on this face alone, with nodes of its own.
@@ -192,6 +201,8 @@ void SharedEdges::own_samples(Face& f, const TrimSegment& s, std::vector<LoopPoi
 
 void SharedEdges::split_span(CurveSpan which) {
   ModelCurve& curve = curves_[which.curve];
+  if (which.curve.index >= static_cast<int>(splits_.size())) splits_.resize(which.curve.index + 1, 0);
+  ++splits_[which.curve.index];
   const int span = which.span;
   const CurveUse& u = curve.uses.front();
   const TrimSegment& s = segment(u);

@@ -16,6 +16,8 @@
 //                                    that use them collected again
 // A use whose face disagrees with the shared samples by more than D is sampled on its own and counted in
 // TessellationReport::unshared_edge_uses (the mesh may have a crack there).
+#include <map>
+#include <tuple>
 #include <vector>
 
 #include "analysis/tessellation/tessellate_to_deviation.hpp"
@@ -57,6 +59,15 @@ class SharedEdges {
   ModelCurves curves_;
   VertexClasses classes_{0};
   ModelNodes nodes_;
+  // Shared samples located on another face (invert_shared_samples), per (face, loop, segment): they
+  // depend only on the curve's samples, so a face collected again after a split of some other curve
+  // takes them as they were. `splits` is the curve's split count when they were located.
+  struct Located {
+    int splits = -1;
+    std::vector<LoopPoint> points;
+  };
+  std::map<std::tuple<int, int, int>, Located> located_;
+  std::vector<int> splits_;  // per curve index: how often split_span has changed its samples
 
   const TrimSegment& segment(const CurveUse& u) const { return faces_[u.face].loops[u.loop].segments[u.segment]; }
   CurveUse use_of(int face, int loop, int segment) const;

@@ -63,9 +63,21 @@ std::vector<std::array<Barycentric, 3>> pieces(const SurfaceDeviationBound& boun
   return out;
 }
 
+// Whether a C0 knot line of `bound` passes strictly between the triangle's corners (when none does,
+// pieces() gives the whole triangle: most triangles, and no allocation then).
+bool meets_c0_line(const SurfaceDeviationBound& bound, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                   const Eigen::Vector2d& c) {
+  auto meets = [&](const std::vector<double>& lines, int axis) {
+    const double lo = std::min({a[axis], b[axis], c[axis]}), hi = std::max({a[axis], b[axis], c[axis]});
+    const auto it = std::upper_bound(lines.begin(), lines.end(), lo);
+    return it != lines.end() && *it < hi;
+  };
+  return meets(bound.c0_u, 0) || meets(bound.c0_v, 1);
+}
+
 }  // namespace
 
-TriangleVerdict certify_triangle(const SurfaceEvaluator& e, const SurfaceDeviationBound& bound, const MeshCorner& A,
+TriangleVerdict certify_triangle(SurfacePointCache& e, const SurfaceDeviationBound& bound, const MeshCorner& A,
                                  const MeshCorner& B, const MeshCorner& C, double d) {
   const MeshCorner* corners[3] = {&A, &B, &C};
   TriangleVerdict v;
@@ -77,7 +89,11 @@ TriangleVerdict certify_triangle(const SurfaceEvaluator& e, const SurfaceDeviati
   const Eigen::Vector3d cross = (B.point - A.point).cross(C.point - A.point);
   const bool plane = cross.norm() > 1e-12 * (B.point - A.point).norm() * (C.point - A.point).norm() && cross.norm() > 0;
   const Eigen::Vector3d normal = plane ? Eigen::Vector3d(cross.normalized()) : Eigen::Vector3d::Zero();
-  const auto parts = pieces(bound, A.uv, B.uv, C.uv, v);
+  static const std::array<Barycentric, 3> whole_triangle{Barycentric(1, 0, 0), Barycentric(0, 1, 0), Barycentric(0, 0, 1)};
+  const bool is_cut = meets_c0_line(bound, A.uv, B.uv, C.uv);
+  const std::vector<std::array<Barycentric, 3>> cut = is_cut ? pieces(bound, A.uv, B.uv, C.uv, v) : std::vector<std::array<Barycentric, 3>>{};
+  const std::array<Barycentric, 3>* parts_begin = is_cut ? cut.data() : &whole_triangle;
+  const std::array<Barycentric, 3>* parts_end = is_cut ? cut.data() + cut.size() : &whole_triangle + 1;
   // Error at a point of the triangle: cached at its corners, evaluated elsewhere.
   auto error_at = [&](const Barycentric& l) {
     for (int q = 0; q < 3; ++q)
@@ -87,7 +103,8 @@ TriangleVerdict certify_triangle(const SurfaceEvaluator& e, const SurfaceDeviati
                  : point_triangle_distance(e.point(uv.x(), uv.y()), A.point, B.point, C.point);
   };
   double total = 0;
-  for (const auto& piece : parts) {
+  for (const std::array<Barycentric, 3>* it = parts_begin; it != parts_end; ++it) {
+    const std::array<Barycentric, 3>& piece = *it;
     Eigen::Vector2d corner[3];
     for (int k = 0; k < 3; ++k) corner[k] = piece[k][0] * A.uv + piece[k][1] * B.uv + piece[k][2] * C.uv;
     const auto m = bound.over(std::min({corner[0].x(), corner[1].x(), corner[2].x()}),

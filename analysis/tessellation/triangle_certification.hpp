@@ -2,7 +2,7 @@
 // Step 4 of tessellate_to_deviation (see its header): the certified deviation of one mesh triangle from
 // the surface over its (u,v) triangle (internal).
 //
-// In: the surface (evaluator and second-derivative bounds), the triangle's three corners (counter-
+// In: the surface (its points, through the face's cache, and second-derivative bounds), the triangle's three corners (counter-
 // clockwise in (u,v)) and D. Out: a bound on the distance between the surface over the triangle and
 // the triangle's plane, ok when it is <= D; when not ok, where the sampled error peaks, for refinement.
 //
@@ -20,7 +20,7 @@
 #include <optional>
 
 #include "analysis/eval/surface_deviation_bound.hpp"
-#include "analysis/eval/surface_evaluator.hpp"
+#include "analysis/tessellation/surface_point_cache.hpp"
 
 namespace cadnurbs::tessellation {
 
@@ -44,7 +44,7 @@ struct TriangleVerdict {
   Eigen::Vector2d c0_point;  // middle of the longest cut along a C0 knot line, when crosses_c0
 };
 
-TriangleVerdict certify_triangle(const SurfaceEvaluator& surface, const SurfaceDeviationBound& bound, const MeshCorner& a,
+TriangleVerdict certify_triangle(SurfacePointCache& surface, const SurfaceDeviationBound& bound, const MeshCorner& a,
                                  const MeshCorner& b, const MeshCorner& c, double max_deviation);
 
 }  // namespace cadnurbs::tessellation
