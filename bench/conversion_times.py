@@ -14,6 +14,7 @@ x3dv/mesh and x3dv/cnb) and OUT/conversion_times.tsv; prints the totals and the 
 Run (not part of ctest):
   bench/conversion_times.py --cadnurbs build/converters/cadnurbs --corpus --out /tmp/times
   bench/conversion_times.py --cadnurbs build/converters/cadnurbs --library --kinds cnb,x3dv --out /tmp/lib
+  (--first K --count N: files K .. K+N-1 only, to split the library over processes, one per core.)
 Standard library only.
 """
 import argparse
@@ -60,13 +61,16 @@ def main():
     which.add_argument("--library", action="store_true")
     parser.add_argument("--kinds", default="mesh,cnb,x3dv,wrl")
     parser.add_argument("--every", type=int, default=1, help="every k-th file only")
+    parser.add_argument("--first", type=int, default=0, help="start at the file of this index (split a run over processes)")
+    parser.add_argument("--count", type=int, default=None, help="at most this many files")
     parser.add_argument("--repeat", type=int, default=1)
     parser.add_argument("--timeout", type=float, default=120)
     args = parser.parse_args()
     kinds = args.kinds.split(",")
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    files = (corpus_files() if args.corpus else library_files())[:: args.every]
+    files = (corpus_files() if args.corpus else library_files())[:: args.every][args.first:]
+    files = files[: args.count] if args.count is not None else files
     header = ["file"] + [k + " (s)" for k in kinds]
     ratios = [(a, b) for a, b in (("x3dv", "mesh"), ("x3dv", "cnb")) if a in kinds and b in kinds]
     header += [f"{a} / {b}" for a, b in ratios] + ["notes"]
