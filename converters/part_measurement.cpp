@@ -246,8 +246,8 @@ void add_nurss(PartRecord& record, const Scene& scene, const Folder& folder, con
                               std::to_string(figures->levels) + " levels (" + f.deviation_basis + ")");
 }
 
-// Draco and meshoptimizer files of the mesh within D, read back and decoded; the deviation is measured
-// on the decoded mesh (encode_mesh_within). A scene the encoder refuses (faces that fell back to meshes
+// Draco and meshoptimizer files of the mesh within D, read back and decoded; the deviation is the bound
+// encode_mesh_within replays and checks on the decoded mesh. A scene the encoder refuses (faces that fell back to meshes
 // have nothing exact to be measured against) gets a warning instead.
 void add_encoded_meshes(PartRecord& record, const Scene& faces, const Folder& folder, const std::string& stem) {
   std::vector<MeshCodec> codecs;

@@ -17,7 +17,7 @@ const CommandSpec& report_command_spec() {
       "IN... [options]",
       "For each part: what NURBS and meshes cost at the same accuracy, in floats (counted as seed 001,\n"
       "6.1 counts them) and in bytes of files actually written and read back (raw and gzip'd), with the\n"
-      "deviation of every mesh measured after reading it back.",
+      "deviation of each file from the part: a bound wherever one exists, else measured face by face.",
       with_read_limits({
           {"deviation", "D", "the maximum deviation D of every mesh, in millimetres (default 1)"},
           {"format", "F",
