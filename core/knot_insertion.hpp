@@ -1,5 +1,5 @@
 #pragma once
-// Knot insertion and refinement (Boehm; Piegl & Tiller A5.1, A5.3). The shape never changes.
+// Knot insertion and refinement (Boehm; Piegl & Tiller A5.1, A5.3, A5.4). The shape never changes.
 #include "core/nurbs_curve.hpp"
 #include "core/nurbs_surface.hpp"
 
@@ -12,7 +12,8 @@ enum class SurfaceDirection { u, v };
 NurbsCurve insert_knot(const NurbsCurve& curve, double t, int times = 1);
 NurbsSurface insert_knot(const NurbsSurface& surface, SurfaceDirection direction, double t, int times = 1);
 
-// Inserts every value of `new_knots` (non-decreasing, inside the domain).
+// Inserts every value of `new_knots` (non-decreasing, inside the domain) at once, in time linear in the
+// control points. Refuses what insert_knot refuses.
 NurbsCurve refine_knots(const NurbsCurve& curve, const std::vector<double>& new_knots);
 NurbsSurface refine_knots(const NurbsSurface& surface, SurfaceDirection direction,
                           const std::vector<double>& new_knots);

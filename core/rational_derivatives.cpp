@@ -1,14 +1,8 @@
 #include "core/rational_derivatives.hpp"
 
-namespace cadnurbs {
+#include "core/binomial.hpp"
 
-namespace {
-double binomial(int n, int k) {
-  double r = 1.0;
-  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-  return r;
-}
-}  // namespace
+namespace cadnurbs {
 
 std::vector<Eigen::Vector3d> rational_curve_derivatives(const std::vector<Eigen::Vector4d>& homogeneous) {
   const int d = static_cast<int>(homogeneous.size()) - 1;

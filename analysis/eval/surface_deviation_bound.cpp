@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/eval/rational_derivative_bound.hpp"
 #include "core/bezier_extraction.hpp"
 #include "core/knot_vector.hpp"
 
 namespace cadnurbs {
 
 namespace {
+
+constexpr int kNumeratorBoundDegree = 3;
 
 SecondDerivativeBound patch_bound(const NurbsSurface& patch) {
   const int p = patch.u_order - 1, q = patch.v_order - 1;
@@ -57,6 +60,17 @@ SecondDerivativeBound patch_bound(const NurbsSurface& patch) {
   m.uu = (guu + 2 * wu * su + wuu * radius) / wmin;
   m.vv = (gvv + 2 * wv * sv + wvv * radius) / wmin;
   m.uv = (guv + wu * sv + wv * su + wuv * radius) / wmin;
+  // The numerators over W^3 (rational_derivative_bound.hpp) keep what cancels: a cylinder's S_uv is 0
+  // there, where the quotient rule above gives a multiple of its radius. Both bound; the smaller holds.
+  // Their products cost the fourth power of the degree: only on the low degrees conics and the
+  // analytic surfaces come in (a degree 6 x 10 patch would cost more than tessellating it).
+  if (p > kNumeratorBoundDegree || q > kNumeratorBoundDegree) return m;
+  BernsteinPolynomial<Eigen::Vector3d> g(p, q, Eigen::Vector3d::Zero());
+  BernsteinPolynomial<double> w(p, q, 0.0);
+  for (int j = 0; j <= q; ++j)
+    for (int i = 0; i <= p; ++i) g.at(i, j) = net[patch.index(i, j)].head<3>(), w.at(i, j) = net[patch.index(i, j)][3];
+  const RationalDerivativeBound numerators = rational_derivative_bound(g, w, du, dv);
+  m.uu = std::min(m.uu, numerators.uu), m.uv = std::min(m.uv, numerators.uv), m.vv = std::min(m.vv, numerators.vv);
   return m;
 }
 

@@ -14,6 +14,9 @@
 // homogeneous form) are bounded through the quotient rule with the Bézier bounds of G, W and their
 // first derivatives, |S - c| <= R and W >= w_min (the homogeneous-form bound as used by Zheng &
 // Sederberg, "Estimating tessellation parameter intervals for rational curves and surfaces", 2000).
+// On patches of degree <= 3 each way (conics, the analytic surfaces) the numerators of the second
+// derivatives over W^3 are bounded too (rational_derivative_bound.hpp) and the smaller bound is kept:
+// there what cancels in the true derivative (a cylinder's S_uv) cancels in the bound.
 // Bézier bounds: |d^2 G/du^2| <= p (p - 1) / du^2 max |second differences of the net|, and so on.
 //
 // The bound needs S to be C1 across the triangle: knot lines of multiplicity >= degree (C0) split

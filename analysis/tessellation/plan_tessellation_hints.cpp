@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "analysis/eval/rational_derivative_bound.hpp"
 #include "analysis/eval/surface_deviation_bound.hpp"
 #include "analysis/eval/surface_evaluator.hpp"
 #include "analysis/tessellation/sample_patch_curvature.hpp"
@@ -67,164 +68,19 @@ std::vector<NurbsCurve> refined_pieces(const std::vector<NurbsCurve>& segments) 
   return out;
 }
 
-// Tensor-product Bernstein polynomial of degree (m, n) on one piece (a curve: n = 0), coefficients
-// u fastest. The rational derivatives below are written over a common denominator W^k as one
-// polynomial numerator, so terms that cancel in the true derivative (S_uv of a cylinder) cancel in
-// the coefficients too; |numerator| <= its largest coefficient (convex hull), W >= smallest weight.
-template <class T>
-struct Bernstein {
-  int m = 0, n = 0;
-  std::vector<T> c;
-  Bernstein(int m_, int n_, const T& zero) : m(m_), n(n_), c((m_ + 1) * (n_ + 1), zero) {}
-  T& at(int i, int j) { return c[i + j * (m + 1)]; }
-  const T& at(int i, int j) const { return c[i + j * (m + 1)]; }
-};
-
-// C(n, k): Pascal's triangle up to n = 127 (products of pieces of degree up to 25 stay below it), a
-// loop beyond.
-double binomial(int n, int k) {
-  constexpr int kRows = 128;
-  static const std::vector<double> triangle = [] {
-    std::vector<double> t(kRows * kRows, 0.0);
-    for (int r = 0; r < kRows; ++r) {
-      t[r * kRows] = 1.0;
-      for (int c = 1; c <= r; ++c) t[r * kRows + c] = t[(r - 1) * kRows + c - 1] + (c < r ? t[(r - 1) * kRows + c] : 0.0);
-    }
-    return t;
-  }();
-  if (n < kRows) return triangle[n * kRows + k];
-  double r = 1;
-  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-  return r;
-}
-
-// d/du (dv: along v) in the global parameter, the piece spanning `span`.
-template <class T>
-Bernstein<T> derivative(const Bernstein<T>& a, bool along_u, double span) {
-  const T zero = T(a.c[0] - a.c[0]);
-  if ((along_u ? a.m : a.n) == 0) return Bernstein<T>(a.m, a.n, zero);
-  Bernstein<T> d(a.m - (along_u ? 1 : 0), a.n - (along_u ? 0 : 1), zero);
-  const double f = (along_u ? a.m : a.n) / span;
-  for (int j = 0; j <= d.n; ++j)
-    for (int i = 0; i <= d.m; ++i) d.at(i, j) = f * (along_u ? a.at(i + 1, j) - a.at(i, j) : a.at(i, j + 1) - a.at(i, j));
-  return d;
-}
-
-template <class R, class A, class B>
-Bernstein<R> product_as(const Bernstein<A>& a, const Bernstein<B>& b, const R& zero) {
-  Bernstein<R> out(a.m + b.m, a.n + b.n, zero);
-  // C(m1, i1) C(m2, i2) / C(m1 + m2, i1 + i2), per direction, computed once
-  auto factors = [](int m1, int m2) {
-    std::vector<double> f((m1 + 1) * (m2 + 1));
-    for (int i1 = 0; i1 <= m1; ++i1)
-      for (int i2 = 0; i2 <= m2; ++i2) f[i1 * (m2 + 1) + i2] = binomial(m1, i1) * binomial(m2, i2) / binomial(m1 + m2, i1 + i2);
-    return f;
-  };
-  const std::vector<double> fu = factors(a.m, b.m), fv = factors(a.n, b.n);
-  for (int j1 = 0; j1 <= a.n; ++j1)
-    for (int i1 = 0; i1 <= a.m; ++i1)
-      for (int j2 = 0; j2 <= b.n; ++j2)
-        for (int i2 = 0; i2 <= b.m; ++i2) {
-          const double f = fu[i1 * (b.m + 1) + i2] * fv[j1 * (b.n + 1) + j2];
-          out.at(i1 + i2, j1 + j2) += R(f * (a.at(i1, j1) * b.at(i2, j2)));
-        }
-  return out;
-}
-Bernstein<Eigen::Vector3d> product(const Bernstein<Eigen::Vector3d>& a, const Bernstein<double>& b) {
-  return product_as(a, b, Eigen::Vector3d(Eigen::Vector3d::Zero()));
-}
-
-// The same polynomial at degree (m, n) >= its own (degree elevation, one step at a time).
-template <class T>
-Bernstein<T> elevated(Bernstein<T> a, int m, int n) {
-  while (a.m < m) {
-    Bernstein<T> e(a.m + 1, a.n, T(a.c[0] - a.c[0]));
-    for (int j = 0; j <= a.n; ++j)
-      for (int i = 0; i <= e.m; ++i) {
-        const double f = static_cast<double>(i) / e.m;
-        e.at(i, j) = T((i > 0 ? f * a.at(i - 1, j) : T(0 * a.at(0, j))) + (i < e.m ? (1 - f) * a.at(i, j) : T(0 * a.at(0, j))));
-      }
-    a = e;
-  }
-  while (a.n < n) {
-    Bernstein<T> e(a.m, a.n + 1, T(a.c[0] - a.c[0]));
-    for (int j = 0; j <= e.n; ++j)
-      for (int i = 0; i <= a.m; ++i) {
-        const double f = static_cast<double>(j) / e.n;
-        e.at(i, j) = T((j > 0 ? f * a.at(i, j - 1) : T(0 * a.at(i, 0))) + (j < e.n ? (1 - f) * a.at(i, j) : T(0 * a.at(i, 0))));
-      }
-    a = e;
-  }
-  return a;
-}
-
-// Sum and difference at the larger of the two degrees (a zero derivative keeps its parent's degree).
-template <class T>
-Bernstein<T> combined(const Bernstein<T>& a, const Bernstein<T>& b, double sign) {
-  const int m = std::max(a.m, b.m), n = std::max(a.n, b.n);
-  Bernstein<T> r = elevated(a, m, n);
-  const Bernstein<T> e = elevated(b, m, n);
-  for (size_t k = 0; k < r.c.size(); ++k) r.c[k] = T(r.c[k] + sign * e.c[k]);
-  return r;
-}
-template <class T>
-Bernstein<T> operator-(const Bernstein<T>& a, const Bernstein<T>& b) { return combined(a, b, -1.0); }
-template <class T>
-Bernstein<T> operator+(const Bernstein<T>& a, const Bernstein<T>& b) { return combined(a, b, 1.0); }
-Bernstein<Eigen::Vector3d> operator*(const Bernstein<double>& a, const Bernstein<Eigen::Vector3d>& b) { return product(b, a); }
-
-Bernstein<Eigen::Vector3d> operator*(double f, Bernstein<Eigen::Vector3d> a) {
-  for (auto& v : a.c) v *= f;
-  return a;
-}
-
-double largest(const Bernstein<Eigen::Vector3d>& a) {
-  double r = 0;
-  for (const auto& v : a.c) r = std::max(r, v.norm());
-  return r;
-}
-
-// Bounds on one rational Bézier piece (G = w (P - c), W = w): first derivatives
-// S_u = (G_u W - G W_u) / W^2, and second S_uu = ((G_uu W - G W_uu) W - 2 W_u (G_u W - G W_u)) / W^3,
-// S_uv = ((G_uv W + G_u W_v - G_v W_u - G W_uv) W - 2 W_v (G_u W - G W_u)) / W^3.
-struct PieceBounds {
-  double su = 0, sv = 0;
-  SecondDerivativeBound m;
-};
-
-PieceBounds piece_bounds(const Bernstein<Eigen::Vector3d>& g, const Bernstein<double>& w, double du, double dv) {
-  PieceBounds out;
-  double w_min = std::numeric_limits<double>::infinity();
-  for (const double x : w.c) w_min = std::min(w_min, x);
-  const auto gu = derivative(g, true, du), gv = derivative(g, false, dv);
-  const auto wu = derivative(w, true, du), wv = derivative(w, false, dv);
-  const auto a_u = product(gu, w) - product(g, wu);  // S_u W^2
-  const auto a_v = product(gv, w) - product(g, wv);
-  out.su = largest(a_u) / (w_min * w_min);
-  out.sv = largest(a_v) / (w_min * w_min);
-  const auto guu = derivative(gu, true, du), guv = derivative(gu, false, dv), gvv = derivative(gv, false, dv);
-  const auto wuu = derivative(wu, true, du), wuv = derivative(wu, false, dv), wvv = derivative(wv, false, dv);
-  const double w3 = w_min * w_min * w_min;
-  out.m.uu = largest(product(product(guu, w) - product(g, wuu), w) - 2.0 * (wu * a_u)) / w3;
-  out.m.vv = largest(product(product(gvv, w) - product(g, wvv), w) - 2.0 * (wv * a_v)) / w3;
-  out.m.uv =
-      largest(product(product(guv, w) + product(gu, wv) - product(gv, wu) - product(g, wuv), w) - 2.0 * (wv * a_u)) / w3;
-  return out;
-}
-
-PieceBounds segment_bounds(const NurbsCurve& segment) {
+// Bounds on one rational Bézier segment of a curve (rational_derivative_bound.hpp, as a piece with q = 0).
+RationalDerivativeBound segment_bounds(const NurbsCurve& segment) {
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (const auto& q : segment.points) c += q;
   c /= static_cast<double>(segment.points.size());
-  Bernstein<Eigen::Vector3d> g(segment.order - 1, 0, Eigen::Vector3d::Zero());
-  Bernstein<double> w(segment.order - 1, 0, 0.0);
+  BernsteinPolynomial<Eigen::Vector3d> g(segment.order - 1, 0, Eigen::Vector3d::Zero());
+  BernsteinPolynomial<double> w(segment.order - 1, 0, 0.0);
   for (int i = 0; i < segment.order; ++i) {
     w.at(i, 0) = segment.weight(i);
     g.at(i, 0) = segment.weight(i) * (segment.points[i] - c);
   }
-  return piece_bounds(g, w, segment.domain_end() - segment.domain_start(), 1.0);
+  return rational_derivative_bound(g, w, segment.domain_end() - segment.domain_start(), 1.0);
 }
-
 
 // A C0 line (or point) of the parametrisation and the bound on the jump of the first derivative there.
 struct Kink {
@@ -259,8 +115,8 @@ std::vector<Kink> surface_kinks_u(const NurbsSurface& surface) {
       Eigen::Vector3d c = Eigen::Vector3d::Zero();
       for (int l = 0; l <= q; ++l) c += right.point(0, l);
       c /= q + 1;
-      Bernstein<Eigen::Vector3d> g(q, 0, Eigen::Vector3d::Zero()), dg(q, 0, Eigen::Vector3d::Zero());
-      Bernstein<double> w(q, 0, 0.0), dw(q, 0, 0.0);
+      BernsteinPolynomial<Eigen::Vector3d> g(q, 0, Eigen::Vector3d::Zero()), dg(q, 0, Eigen::Vector3d::Zero());
+      BernsteinPolynomial<double> w(q, 0, 0.0), dw(q, 0, 0.0);
       double w_min = std::numeric_limits<double>::infinity();
       for (int l = 0; l <= q; ++l) {
         const Eigen::Vector4d d_right =
@@ -274,7 +130,8 @@ std::vector<Kink> surface_kinks_u(const NurbsSurface& surface) {
         dg.at(l, 0) = d.head<3>() - d[3] * c;
         w_min = std::min(w_min, right.weight(0, l));
       }
-      kink.jump = std::max(kink.jump, largest(product(dg, w) - product(g, dw)) / (w_min * w_min));
+      kink.jump = std::max(kink.jump, largest_coefficient(bernstein_sum(bernstein_product(dg, w), bernstein_product(g, dw), -1.0)) /
+                                             (w_min * w_min));
     }
     if (kink.jump > 0.0) out.push_back(kink);
   }
@@ -362,7 +219,7 @@ CurveModel curve_model(const NurbsCurve& curve) {
   model.a = curve.domain_start(), model.b = curve.domain_end();
   const int p = curve.degree();
   const auto segments = bezier_segments(curve);
-  for (const auto& piece : refined_pieces(segments)) model.m2 = std::max(model.m2, segment_bounds(piece).m.uu);
+  for (const auto& piece : refined_pieces(segments)) model.m2 = std::max(model.m2, segment_bounds(piece).uu);
   // Only where the curve is C0 (multiplicity >= degree): elsewhere the pieces join with C1.
   const std::vector<double> corners = c0_knots(curve.knots, curve.order, curve.count());
   for (size_t s = 0; s + 1 < segments.size(); ++s) {

@@ -34,6 +34,29 @@ TEST(KnotInsertion, SurfaceShapeUnchangedAt1000Points) {
   }
 }
 
+TEST(KnotInsertion, RefiningAtOnceGivesTheNetOfOneAtATime) {
+  const NurbsCurve c = test::full_circle(5.0);
+  const std::vector<double> knots{0.25, 0.5, 0.5, 1.2, 1.7, 3.3, 3.9};
+  NurbsCurve one_by_one = c;
+  for (double t : knots) one_by_one = insert_knot(one_by_one, t);
+  const NurbsCurve at_once = refine_knots(c, knots);
+  ASSERT_EQ(at_once.knots, one_by_one.knots);
+  ASSERT_EQ(at_once.count(), one_by_one.count());
+  for (int i = 0; i < at_once.count(); ++i) {
+    EXPECT_LT((at_once.points[i] - one_by_one.points[i]).norm(), 1e-12) << i;
+    EXPECT_NEAR(at_once.weight(i), one_by_one.weight(i), 1e-12) << i;
+  }
+}
+
+TEST(KnotInsertion, RefinementRefusesMultiplicityAboveDegree) {
+  try {
+    refine_knots(test::full_circle(1), {0.5, 2.0});
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "knot insertion: knot 2.000000 would get multiplicity 3 above the degree");
+  }
+}
+
 TEST(KnotInsertion, RefusesKnotOutsideDomain) {
   EXPECT_THROW(insert_knot(test::quarter_circle(1), 1.5), std::runtime_error);
 }
