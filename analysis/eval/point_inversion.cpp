@@ -25,8 +25,12 @@ SurfaceProjection project_to_surface(const SurfaceEvaluator& surface, const Eige
     if (!(m.determinant() > 1e-300)) m += Eigen::Matrix2d::Identity() * (1e-12 * (jtj.trace() + 1e-300));
     Eigen::Vector2d step = -m.inverse() * g;
     if (!step.allFinite()) break;
-    // Converged when the model's decrease of |r|^2 / 2 is below rounding (see project_to_trim_curve).
-    if (-0.5 * g.dot(step) <= 1e-15 * (1 + dist) * dist) break;
+    // A last tiny step is taken as it is (see project_to_trim_curve).
+    if ((j.su * step.x() + j.sv * step.y()).norm() <= 1e-9 * (1 + dist)) {
+      uv = Eigen::Vector2d(std::clamp(uv.x() + step.x(), u0, u1), std::clamp(uv.y() + step.y(), v0, v1));
+      const Eigen::Vector3d at = surface.point(uv.x(), uv.y());
+      return {uv, at, (at - p).norm()};
+    }
     bool improved = false;
     for (int half = 0; half < 12; ++half, step *= 0.5) {
       const Eigen::Vector2d next(std::clamp(uv.x() + step.x(), u0, u1), std::clamp(uv.y() + step.y(), v0, v1));
@@ -63,11 +67,15 @@ CurveProjection project_to_trim_curve(const SurfaceEvaluator& surface, const Tri
     const Eigen::Vector3d ct = j.su * dc.x() + j.sv * dc.y();
     const double denom = ct.squaredNorm();
     if (!(denom > 0)) break;
-    const double slope = (j.s - p).dot(ct);
-    double step = -slope / denom;
-    // Converged when the step cannot lower the distance by more than rounding: near the minimum the
-    // distance is flat to within sqrt(epsilon) of t, and the halvings below would only fail.
-    if (slope * slope / (2 * denom) <= 1e-15 * (1 + dist) * dist) break;
+    double step = -(j.s - p).dot(ct) / denom;
+    // A last step that moves the point by less than 1e-9 of the distance (plus one unit): taken as it
+    // is. Near the minimum the distance is flat to rounding, so comparing distances there fails and
+    // the halvings below would cost 12 evaluations for nothing.
+    if (std::abs(step) * std::sqrt(denom) <= 1e-9 * (1 + dist)) {
+      t = std::clamp(t + step, t_lo, t_hi);
+      eval(t, uv, j);
+      return {t, uv, j.s, (j.s - p).norm()};
+    }
     bool improved = false;
     for (int half = 0; half < 12; ++half, step *= 0.5) {
       const double tn = std::clamp(t + step, t_lo, t_hi);

@@ -76,6 +76,7 @@ std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, con
   first.point = start_point;
   out.push_back(first);
   for (size_t i = 0; i + 1 < breaks.size(); ++i) {
+    const size_t first_of_piece = out.size() - 1;
     TrimSample last = sample(breaks[i + 1]);
     if (i + 2 == breaks.size()) last.point = end_point;
     // Depth-first bisection; `pending` holds the right ends still to reach, nearest last.
@@ -90,6 +91,24 @@ std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, con
       } else {
         pending.push_back(sample(0.5 * (a.t + b.t)));
       }
+    }
+    // Bisection stops at chords a quarter to all of the deviation allowed: up to twice the chords
+    // needed. Greedily, each kept sample reaches the farthest later sample whose chord still passes.
+    std::vector<TrimSample> merged(out.begin() + static_cast<std::ptrdiff_t>(first_of_piece), out.end());
+    out.resize(first_of_piece);
+    size_t k = 0;
+    out.push_back(merged[0]);
+    while (k + 1 < merged.size()) {
+      size_t j = k + 1;
+      while (j + 1 < merged.size()) {
+        const TrimSample& a = out.back();
+        const TrimSample& b = merged[j + 1];
+        const bool coarse = crossings(grid_u, a.uv.x(), b.uv.x()) > 1 || crossings(grid_v, a.uv.y(), b.uv.y()) > 1;
+        if (coarse || !chord_ok(surface, bound, segment, a, b, max_deviation)) break;
+        ++j;
+      }
+      out.push_back(merged[j]);
+      k = j;
     }
   }
   return out;

@@ -11,6 +11,8 @@
 // unsampled part of a chord's sagitta is about 1/64 of it when the curvature varies less than a few
 // times over one chord; the 0.9 factor covers that (0.9 (1 + 1/64) < 0.92). Chords never straddle a
 // C0 knot of the pcurve (the initial chords run between its kinks, polyline pieces for polylines).
+// Chords are found by bisection, then merged greedily: each kept sample reaches the farthest later
+// sample whose chord passes both criteria (bisection alone stops anywhere between D/4 and D).
 #include <Eigen/Core>
 #include <vector>
 
