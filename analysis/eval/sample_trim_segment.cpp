@@ -27,14 +27,27 @@ namespace {
 
 constexpr int kChordSamples = 8;
 
-// Whether chord (a, b) is fine; see the header for the two criteria.
+// Whether chord (a, b) is fine; see the header for the two criteria. `sagitta`, when given, gets the
+// largest sampled distance of criterion (1) (0 when it passed and (2) failed).
 bool chord_ok(const SurfaceEvaluator& surface, const SurfaceDeviationBound& bound, const TrimSegment& segment,
-              const TrimSample& a, const TrimSample& b, double d) {
+              const TrimSample& a, const TrimSample& b, double d, double* sagitta = nullptr) {
+  double largest = 0;
   for (int j = 1; j < kChordSamples; ++j) {
     const Eigen::Vector2d uv = segment_uv(segment, a.t + (b.t - a.t) * j / kChordSamples);
-    if (point_segment_distance(surface.point(uv.x(), uv.y()), a.point, b.point) > 0.9 * d) return false;
+    largest = std::max(largest, point_segment_distance(surface.point(uv.x(), uv.y()), a.point, b.point));
   }
+  if (sagitta) *sagitta = largest > 0.9 * d ? largest : 0.0;
+  if (largest > 0.9 * d) return false;
   return surface_chord_within(surface, bound, a.uv, a.point, b.uv, b.point, d);
+}
+
+// Pieces a failed chord is split into: a sagitta grows with the square of the chord, so sqrt(s / 0.9 D)
+// pieces would just pass where the curvature is even; 10 % more for arcs of a large angle (where the
+// square law underestimates) and at least 2. Bisection alone gives chords of a quarter to all of D, up
+// to twice the chords a circle needs.
+int pieces_for(double sagitta, double d) {
+  if (!(sagitta > 0)) return 2;
+  return std::clamp(static_cast<int>(std::ceil(1.1 * std::sqrt(sagitta / (0.9 * d)))), 2, 64);
 }
 
 }  // namespace
@@ -85,11 +98,14 @@ std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, con
       const TrimSample& a = out.back();
       const TrimSample b = pending.back();
       const bool coarse = crossings(grid_u, a.uv.x(), b.uv.x()) > 1 || crossings(grid_v, a.uv.y(), b.uv.y()) > 1;
-      if (b.t - a.t <= min_step || (!coarse && chord_ok(surface, bound, segment, a, b, max_deviation))) {
+      double sagitta = 0;
+      if (b.t - a.t <= min_step || (!coarse && chord_ok(surface, bound, segment, a, b, max_deviation, &sagitta))) {
         out.push_back(b);
         pending.pop_back();
       } else {
-        pending.push_back(sample(0.5 * (a.t + b.t)));
+        const int n = coarse ? 2 : pieces_for(sagitta, max_deviation);
+        const double ta = a.t, tb = b.t;
+        for (int k = n - 1; k >= 1; --k) pending.push_back(sample(ta + (tb - ta) * k / n));
       }
     }
     // Bisection stops at chords a quarter to all of the deviation allowed: up to twice the chords

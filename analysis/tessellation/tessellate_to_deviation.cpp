@@ -96,7 +96,9 @@ class Tessellator {
     else f.loops = f.trimmed->loops;
     shared_.add_face(static_cast<int>(&f - faces_.data()));
     std::vector<std::vector<Eigen::Vector2d>> polys;
-    for (const auto& loop : f.loops) polys.push_back(loop_polygon(loop, 8));
+    // Four points a span: the grid only asks which patches the region reaches, and certification
+    // refines wherever the planning fell short.
+    for (const auto& loop : f.loops) polys.push_back(loop_polygon(loop, 4));
     tessellation::TessellationGrid grid = tessellation::plan_tessellation_grid(*f.eval, f.bound, polys, d_);
     f.us = std::move(grid.us);
     f.vs = std::move(grid.vs);
