@@ -164,13 +164,14 @@ void count_mesh_file(const Scene& read_back, bool soup, RepresentationFigures& f
   });
 }
 
-// The certified mesh at D (`meshed`, of `faces`; `written` = its triangles in world coordinates) written
-// as `file`. The deviation is a bound when every triangle is certified: the certificate, stretched by the
-// placements, plus the largest move of a corner between the mesh written and the file read back
+// The certified mesh at D (`meshed`, of `faces`; `written` = its triangles in world coordinates,
+// `certificate` = its certificate stretched by the placements) written as `file`. The deviation is a bound
+// when every triangle is certified: the certificate plus the largest move of a corner between the mesh written and the file read back
 // (analysis/mesh/largest_corner_move). With uncertified triangles, each face's triangles are measured
 // against that face (sampled). `as_read` gets the file's triangles in world coordinates, unwelded.
 RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, const CertifiedMesh& meshed,
-                                   const Scene& faces, const TriangleMesh& written, TriangleMesh& as_read) {
+                                   const Scene& faces, const TriangleMesh& written, double certificate,
+                                   TriangleMesh& as_read) {
   RepresentationFigures f{file.key, file.label, RepresentationKind::mesh, 0, 0, 0, 0, 0, ""};
   measure_bytes(path, f);
   const Scene read_back = read_scene(path.string());
@@ -181,7 +182,6 @@ RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, c
     f.deviation_basis = "not known: the file read back has " + std::to_string(as_read.triangles.size()) +
                         " triangles where " + std::to_string(written.triangles.size()) + " were written";
   } else if (meshed.report.uncertified_triangles == 0) {
-    const double certificate = largest_world_scale(meshed.meshes) * meshed.report.certified_deviation;
     f.deviation = certificate + *moved;
     f.deviation_kind = DeviationKind::bound;
     f.deviation_basis = "bound: the tessellator's certificate " + report_number(certificate) +
@@ -465,13 +465,14 @@ PartRecord measure(const std::string& input, const BrepTranslation& loaded, cons
     record.warnings.push_back(std::to_string(meshed.report.uncertified_triangles) +
                               " triangles of the mesh at D could not be certified");
   const TriangleMesh mesh_written = scene_triangles(meshed.meshes);
+  const double mesh_certificate = largest_world_scale(meshed.meshes) * meshed.report.certified_deviation;
   for (const auto& file : kMeshFiles) {
     const fs::path path = folder.file(stem + "-mesh", file.extension);
     TriangleMesh as_read;
     const bool written = measured_or_noted(record, file.label, path, [&] {
       write_scene(path.string(), meshed.meshes, convert_options(record, scene, path, record.deviation));
       record.representations.push_back(
-          mesh_figures(file, path, meshed, meshed.sewn ? meshed.faces : scene, mesh_written, as_read));
+          mesh_figures(file, path, meshed, meshed.sewn ? meshed.faces : scene, mesh_written, mesh_certificate, as_read));
     });
     // The indexed figures: the first file's mesh (the IndexedFaceSet) with its shared vertices welded.
     if (written && record.mesh.vertices == 0) record.mesh = mesh_storage(weld_exact(as_read));

@@ -27,4 +27,10 @@ TriangleMesh triangulated(const PolygonMesh& mesh) {
   return out;
 }
 
+std::size_t triangulated_count(const PolygonMesh& mesh) {
+  std::size_t count = 0;
+  for (const auto& polygon : mesh.polygons) count += polygon.size() > 2 ? polygon.size() - 2 : 0;
+  return count;
+}
+
 }  // namespace cadnurbs

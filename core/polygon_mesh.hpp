@@ -3,6 +3,7 @@
 // are bounded by straight edges (VRML/X3D IndexedFaceSet with convex TRUE). Any fan of a polygon
 // covers it exactly, so readers and consumers that want triangles take triangulated().
 #include <Eigen/Geometry>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -21,5 +22,8 @@ void validate(const PolygonMesh& mesh, const std::string& entity);
 
 // The same surface as triangles: each polygon fanned from its first corner; same positions.
 TriangleMesh triangulated(const PolygonMesh& mesh);
+
+// How many triangles triangulated(mesh) makes, without making them.
+std::size_t triangulated_count(const PolygonMesh& mesh);
 
 }  // namespace cadnurbs

@@ -17,6 +17,7 @@
 
 #include "analysis/eval/point_inversion.hpp"
 #include "analysis/mesh/sample_triangles.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
 #include "analysis/eval/surface_evaluator.hpp"
 #include "analysis/mesh/triangulate_polygon.hpp"
 #include "core/geometry_error.hpp"
@@ -471,12 +472,7 @@ namespace {
 // The triangles of every shape of `meshes`, in scene_triangles' order (fanned polygons included).
 std::vector<std::size_t> triangles_per_shape(const Scene& meshes) {
   std::vector<std::size_t> counts;
-  for_each_shape(meshes, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
-    if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry)) counts.push_back(mesh->triangles.size());
-    else if (const auto* polygons = std::get_if<PolygonMesh>(&shape.geometry))
-      counts.push_back(triangulated(*polygons).triangles.size());
-    else counts.push_back(0);
-  });
+  for_each_shape(meshes, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) { counts.push_back(shape_triangle_count(shape)); });
   return counts;
 }
 

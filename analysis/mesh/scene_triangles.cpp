@@ -19,4 +19,10 @@ TriangleMesh scene_triangles(const Scene& scene) {
   return out;
 }
 
+std::size_t shape_triangle_count(const Shape& shape) {
+  if (const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry)) return mesh->triangles.size();
+  if (const auto* polygons = std::get_if<PolygonMesh>(&shape.geometry)) return triangulated_count(*polygons);
+  return 0;
+}
+
 }  // namespace cadnurbs

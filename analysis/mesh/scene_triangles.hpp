@@ -9,4 +9,7 @@ namespace cadnurbs {
 // curves are left out. Vertices are not welded.
 TriangleMesh scene_triangles(const Scene& scene);
 
+// How many triangles scene_triangles takes from `shape` (0 for surfaces and curves).
+std::size_t shape_triangle_count(const Shape& shape);
+
 }  // namespace cadnurbs
