@@ -159,26 +159,23 @@ void check_refinement(const std::vector<double>& knots, int order, int count, co
 // Every value of x (sorted) inserted into one row at once (Boehm's refinement, Piegl & Tiller A5.4):
 // the points outside the affected spans are copied, the others are computed once each from the
 // right, so the cost is linear in the row, not in (row x new knots) as one insertion at a time.
-// Returns the new knot vector; `row` becomes the refined row.
-std::vector<double> refine_row(const std::vector<double>& u, int order, const std::vector<double>& x, HomogeneousRow& row) {
+// `ubar` is the refined knot vector (u and x merged); `row` becomes the refined row.
+void refine_row(const std::vector<double>& u, const std::vector<double>& ubar, int order, const std::vector<double>& x,
+                HomogeneousRow& row) {
   const int p = order - 1;
-  const int n = static_cast<int>(row.size()) - 1, m = n + p + 1, r = static_cast<int>(x.size()) - 1;
+  const int n = static_cast<int>(row.size()) - 1, r = static_cast<int>(x.size()) - 1;
   auto span_of = [&](double t) {  // knots[span] <= t < knots[span + 1], the last span at the domain end
     if (t >= u[n + 1]) return n;
     return static_cast<int>(std::upper_bound(u.begin() + p, u.begin() + n + 1, t) - u.begin()) - 1;
   };
   const int a = span_of(x.front()), b = span_of(x.back()) + 1;
   HomogeneousRow q(row.size() + x.size());
-  std::vector<double> ubar(u.size() + x.size());
   for (int j = 0; j <= a - p; ++j) q[j] = row[j];
   for (int j = b - 1; j <= n; ++j) q[j + r + 1] = row[j];
-  for (int j = 0; j <= a; ++j) ubar[j] = u[j];
-  for (int j = b + p; j <= m; ++j) ubar[j + r + 1] = u[j];
   int i = b + p - 1, k = b + p + r;
   for (int j = r; j >= 0; --j) {
     while (x[j] <= u[i] && i > a) {
       q[k - p - 1] = row[i - p - 1];
-      ubar[k] = u[i];
       --k, --i;
     }
     q[k - p - 1] = q[k - p];
@@ -192,11 +189,16 @@ std::vector<double> refine_row(const std::vector<double>& u, int order, const st
         q[at - 1] = alpha * q[at - 1] + (1.0 - alpha) * q[at];
       }
     }
-    ubar[k] = x[j];
     --k;
   }
   row = std::move(q);
-  return ubar;
+}
+
+std::vector<double> merged_knots(const std::vector<double>& knots, const std::vector<double>& new_knots) {
+  std::vector<double> out;
+  out.reserve(knots.size() + new_knots.size());
+  std::merge(knots.begin(), knots.end(), new_knots.begin(), new_knots.end(), std::back_inserter(out));
+  return out;
 }
 
 }  // namespace
@@ -206,7 +208,8 @@ NurbsCurve refine_knots(const NurbsCurve& curve, const std::vector<double>& new_
   check_refinement(curve.knots, curve.order, curve.count(), new_knots);
   HomogeneousRow row = to_homogeneous(curve.points, curve.weights);
   NurbsCurve out = curve;
-  out.knots = refine_row(curve.knots, curve.order, new_knots, row);
+  out.knots = merged_knots(curve.knots, new_knots);
+  refine_row(curve.knots, out.knots, curve.order, new_knots, row);
   from_homogeneous(row, curve.is_rational(), out.points, out.weights);
   if (curve.dimension == 2)
     for (auto& p : out.points) p.z() = 0.0;
@@ -220,13 +223,11 @@ NurbsSurface refine_knots(const NurbsSurface& s, SurfaceDirection direction, con
   const int order = in_u ? s.u_order : s.v_order;
   const int count = in_u ? s.u_count : s.v_count;
   check_refinement(knots, order, count, new_knots);
-  std::vector<double> refined_knots;  // what refine_row makes of them, the same for every row
-  std::merge(knots.begin(), knots.end(), new_knots.begin(), new_knots.end(), std::back_inserter(refined_knots));
-  return rewrite_rows(s, direction, count + static_cast<int>(new_knots.size()), std::move(refined_knots),
-                      [&](HomogeneousRow row) {
-                        refine_row(knots, order, new_knots, row);
-                        return row;
-                      });
+  const std::vector<double> refined_knots = merged_knots(knots, new_knots);
+  return rewrite_rows(s, direction, count + static_cast<int>(new_knots.size()), refined_knots, [&](HomogeneousRow row) {
+    refine_row(knots, refined_knots, order, new_knots, row);
+    return row;
+  });
 }
 
 }  // namespace cadnurbs

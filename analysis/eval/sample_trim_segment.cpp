@@ -76,7 +76,11 @@ std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, con
                                             const TrimSegment& segment, double max_deviation,
                                             const Eigen::Vector3d& start_point, const Eigen::Vector3d& end_point,
                                             const std::vector<double>* grid_u, const std::vector<double>* grid_v) {
-  auto crossings = [](const std::vector<double>* g, double a, double b) { return g ? lines_between(*g, a, b) : 0; };
+  // A chord crossing more than one grid line in u or in v is refused whatever its deviation.
+  auto too_coarse = [&](const TrimSample& a, const TrimSample& b) {
+    auto crossings = [](const std::vector<double>* g, double x, double y) { return g ? lines_between(*g, x, y) : 0; };
+    return crossings(grid_u, a.uv.x(), b.uv.x()) > 1 || crossings(grid_v, a.uv.y(), b.uv.y()) > 1;
+  };
   std::vector<double> breaks = segment_kinks(segment);
   const double t0 = breaks.front(), t1 = breaks.back();
   const double min_step = 1e-12 * std::max(1.0, std::abs(t1 - t0));
@@ -97,7 +101,7 @@ std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, con
     while (!pending.empty()) {
       const TrimSample& a = out.back();
       const TrimSample b = pending.back();
-      const bool coarse = crossings(grid_u, a.uv.x(), b.uv.x()) > 1 || crossings(grid_v, a.uv.y(), b.uv.y()) > 1;
+      const bool coarse = too_coarse(a, b);
       double sagitta = 0;
       if (b.t - a.t <= min_step || (!coarse && chord_ok(surface, bound, segment, a, b, max_deviation, &sagitta))) {
         out.push_back(b);
@@ -108,8 +112,8 @@ std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, con
         for (int k = n - 1; k >= 1; --k) pending.push_back(sample(ta + (tb - ta) * k / n));
       }
     }
-    // Bisection stops at chords a quarter to all of the deviation allowed: up to twice the chords
-    // needed. Greedily, each kept sample reaches the farthest later sample whose chord still passes.
+    // Splitting stops at chords anywhere below the deviation allowed. Greedily, each kept sample
+    // reaches the farthest later sample whose chord still passes.
     std::vector<TrimSample> merged(out.begin() + static_cast<std::ptrdiff_t>(first_of_piece), out.end());
     out.resize(first_of_piece);
     size_t k = 0;
@@ -119,8 +123,7 @@ std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, con
       while (j + 1 < merged.size()) {
         const TrimSample& a = out.back();
         const TrimSample& b = merged[j + 1];
-        const bool coarse = crossings(grid_u, a.uv.x(), b.uv.x()) > 1 || crossings(grid_v, a.uv.y(), b.uv.y()) > 1;
-        if (coarse || !chord_ok(surface, bound, segment, a, b, max_deviation)) break;
+        if (too_coarse(a, b) || !chord_ok(surface, bound, segment, a, b, max_deviation)) break;
         ++j;
       }
       out.push_back(merged[j]);

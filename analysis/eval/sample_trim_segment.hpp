@@ -11,8 +11,9 @@
 // unsampled part of a chord's sagitta is about 1/64 of it when the curvature varies less than a few
 // times over one chord; the 0.9 factor covers that (0.9 (1 + 1/64) < 0.92). Chords never straddle a
 // C0 knot of the pcurve (the initial chords run between its kinks, polyline pieces for polylines).
-// Chords are found by bisection, then merged greedily: each kept sample reaches the farthest later
-// sample whose chord passes both criteria (bisection alone stops anywhere between D/4 and D).
+// A failed chord is split into pieces by its sampled sagitta (halved when it failed criterion (2) or the
+// grid), then chords are merged greedily: each kept sample reaches the farthest later sample whose
+// chord passes both criteria.
 #include <Eigen/Core>
 #include <vector>
 
