@@ -9,11 +9,14 @@
 //      bound Q of surface_deviation_bound (this is exactly the mesh edge's own deviation).
 // (1) has no rigorous remainder (it would need bounds on the pcurve's derivatives): with m = 8 the
 // unsampled part of a chord's sagitta is about 1/64 of it when the curvature varies less than a few
-// times over one chord; the 0.9 factor covers that (0.9 (1 + 1/64) < 0.92). Chords never straddle a
-// C0 knot of the pcurve (the initial chords run between its kinks, polyline pieces for polylines).
-// A failed chord is split into pieces by its sampled sagitta (halved when it failed criterion (2) or the
-// grid), then chords are merged greedily: each kept sample reaches the farthest later sample whose
-// chord passes both criteria.
+// times over one chord; the 0.9 factor covers that (0.9 (1 + 1/64) < 0.92). A chord may span C0
+// knots of the pcurve (polyline vertices, the knots of a degree-1 pcurve) and the points where a
+// polyline crosses a C0 knot line of the surface: these kinks are sampled as well, so the smooth pieces
+// between samples are never longer than an eighth of the chord. A failed chord is split into pieces by
+// its sampled sagitta (halved when it failed criterion (2) or the grid; splits move onto nearby kinks),
+// then chords are merged greedily, each kept sample reaching the farthest later sample whose chord
+// passes; last, between samples on kinks, one chord fewer evenly spaced in t replaces the run while
+// every chord of it passes.
 #include <Eigen/Core>
 #include <vector>
 

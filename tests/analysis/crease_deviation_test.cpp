@@ -39,8 +39,9 @@ TEST(CreaseDeviation, CappingPostMeshMeasuresWithinOneMillimetre) {
   const DeviationMeasure m = capping_post_measured_at(1.0);
   EXPECT_LE(m.mesh_to_surface.max, 1.0);
   EXPECT_LE(m.surface_to_mesh.max, 1.0);
-  // The chords across the profile's corners are seen: the body's corners lie 0.91 mm off the mesh.
-  EXPECT_GT(m.surface_to_mesh.max, 0.8);
+  // The measure sees the chords' sagittas: the profile's corners are chord ends, and the body's
+  // chords between them lie up to 0.76 mm off the surface.
+  EXPECT_GT(m.surface_to_mesh.max, 0.7);
 }
 
 TEST(CreaseDeviation, CappingPostMeshMeasuresWithinAQuarterMillimetre) {
