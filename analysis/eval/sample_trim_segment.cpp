@@ -89,8 +89,8 @@ int pieces_for(double sagitta, double d) {
 
 // Chords come out uneven (a curvature that varies, split pieces that fell unluckily). Between two
 // samples on kinks (corners stay), the chords a run needs is about sum sqrt(s_i / s_max) by the square
-// law of sagittas; that many chords (then one more, up to two more) placed so that each gets an equal
-// share of sum sqrt(s_i) replace the run when every one of them passes.
+// law of sagittas; that many chords (else one more, up to one fewer than the run has) placed so that
+// each gets an equal share of sum sqrt(s_i) replace the run when every one of them passes.
 template <class Sample, class Passes>
 std::vector<TrimSample> evened_runs(const std::vector<TrimSample>& out, const std::vector<double>& sagittas,
                                     const std::vector<double>& kinks, double s_max, Sample sample, Passes passes) {
@@ -108,17 +108,18 @@ std::vector<TrimSample> evened_runs(const std::vector<TrimSample>& out, const st
       std::vector<TrimSample> candidate;
       TrimSample previous = out[run_start];
       bool ok = true;
+      size_t c = 0;  // the run's chord holding the k-th share (the shares grow with k)
       for (size_t k = 1; ok && k <= n; ++k) {
+        const double fraction = static_cast<double>(k) / static_cast<double>(n);
         TrimSample next = out[run_end];
-        if (k < n) {
-          const double target = total > 0 ? total * static_cast<double>(k) / static_cast<double>(n) : 0.0;
-          size_t c = 0;
+        if (k < n && total > 0) {
+          const double target = total * static_cast<double>(k) / static_cast<double>(n);
           while (c + 1 < chords && share[c + 1] <= target) ++c;
           const double w = share[c + 1] - share[c];
-          const double f = total > 0 ? (w > 0 ? (target - share[c]) / w : 0.0) : static_cast<double>(k) / static_cast<double>(n);
-          const double ta = total > 0 ? out[run_start + c].t : out[run_start].t;
-          const double tb = total > 0 ? out[run_start + c + 1].t : out[run_end].t;
-          next = sample(ta + f * (tb - ta));
+          const double f = w > 0 ? (target - share[c]) / w : 0.0;
+          next = sample(out[run_start + c].t + f * (out[run_start + c + 1].t - out[run_start + c].t));
+        } else if (k < n) {  // a straight run: evenly in t
+          next = sample(out[run_start].t + fraction * (out[run_end].t - out[run_start].t));
         }
         ok = passes(previous, next);
         candidate.push_back(next);
@@ -217,6 +218,5 @@ std::vector<TrimSample> sample_trim_segment(const SurfaceEvaluator& surface, con
   // them no slack, and their certification cost more than the samples saved (bench_tessellation).
   return evened_runs(out, sagittas, kinks, 0.7 * max_deviation, sample, passes);
 }
-
 
 }  // namespace cadnurbs
