@@ -143,7 +143,7 @@ double profile_minimum(const NurbsCurve& profile, std::optional<double> near, Te
 }
 
 // The meridian coordinates (rho = distance from the axis, z = along the axis) of a revolution's profile
-// at t with their first two derivatives, and the profile point's own angle about the axis.
+// at t with their first two derivatives, and its part across the axis (whose direction gives its angle).
 struct Meridian {
   double rho, rho1, rho2, z, z1, z2;
   Eigen::Vector3d w;  // the part across the axis
@@ -181,7 +181,8 @@ Eigen::Vector2d revolution_inverse(const RevolutionSurface& s, const Eigen::Vect
   const double t = profile_minimum(s.profile, component(near, 1), [&](const NurbsCurve& piece, double t) {
     const Meridian m = meridian(piece, s.axis_point, d, t);
     const double dr = m.rho - rho, dz = m.z - z;
-    return Terms{(dr * dr + dz * dz) / 2, dr * m.rho1 + dz * m.z1, m.rho1 * m.rho1 + dr * m.rho2 + m.z1 * m.z1 + dz * m.z2};
+    return Terms{(dr * dr + dz * dz) / 2, dr * m.rho1 + dz * m.z1,
+                 m.rho1 * m.rho1 + dr * m.rho2 + m.z1 * m.z1 + dz * m.z2};
   });
   const Meridian m = meridian(s.profile, s.axis_point, d, t);
   const double size = std::max({rho, std::abs(z), m.rho, std::abs(m.z)});
@@ -208,7 +209,9 @@ Eigen::Vector3d natural_point(const AnalyticSurface& surface, const Eigen::Vecto
   const double u = n.x(), v = n.y();
   return std::visit(
       Overloaded{
-          [&](const PlaneSurface& s) -> Eigen::Vector3d { return to_world(s.frame, {u, v, 0}); },
+          [&](const PlaneSurface& s) -> Eigen::Vector3d {
+            return to_world(s.frame, {u, v, 0});
+          },
           [&](const CylinderSurface& s) -> Eigen::Vector3d {
             return s.frame.origin + s.radius * radial(s.frame, u) + v * s.frame.z;
           },
@@ -232,10 +235,18 @@ Eigen::Vector3d natural_point(const AnalyticSurface& surface, const Eigen::Vecto
 
 std::array<bool, 2> angular_directions(const AnalyticSurface& surface) {
   return std::visit(Overloaded{
-                        [](const PlaneSurface&) { return std::array<bool, 2>{false, false}; },
-                        [](const TorusSurface&) { return std::array<bool, 2>{true, true}; },
-                        [](const ExtrusionSurface&) { return std::array<bool, 2>{false, false}; },
-                        [](const auto&) { return std::array<bool, 2>{true, false}; },
+                        [](const PlaneSurface&) {
+                          return std::array<bool, 2>{false, false};
+                        },
+                        [](const TorusSurface&) {
+                          return std::array<bool, 2>{true, true};
+                        },
+                        [](const ExtrusionSurface&) {
+                          return std::array<bool, 2>{false, false};
+                        },
+                        [](const auto&) {
+                          return std::array<bool, 2>{true, false};
+                        },
                     },
                     surface);
 }
@@ -247,56 +258,55 @@ Eigen::Vector2d natural_inverse(const AnalyticSurface& surface, const Eigen::Vec
   auto axial_angle = [&](const Cylindrical& c, double size) {
     return c.rho <= kOnAxis * size ? undefined_angle(near_u) : placed_angle(c.phi, near_u);
   };
-  return std::visit(
-      Overloaded{
-          [&](const PlaneSurface& s) -> Eigen::Vector2d { return to_local(s.frame, p).head<2>(); },
-          [&](const CylinderSurface& s) -> Eigen::Vector2d {
-            const Cylindrical c = cylindrical(s.frame, p);
-            return {axial_angle(c, s.radius + c.rho), c.z};
-          },
-          [&](const ConeSurface& s) -> Eigen::Vector2d {
-            // In p's meridian plane the cone is the line (r + v k, v) over signed radii: nearest v for
-            // radius +rho (angle phi) and -rho (angle phi + pi, the other nappe); the nearer wins.
-            const Cylindrical c = cylindrical(s.frame, p);
-            const double k = std::tan(s.semi_angle);
-            auto foot = [&](double signed_rho) {
-              const double v = (c.z + k * (signed_rho - s.radius)) / (1 + k * k);
-              return std::pair{v, std::hypot(s.radius + v * k - signed_rho, v - c.z)};
-            };
-            const auto [v_front, d_front] = foot(c.rho);
-            const auto [v_back, d_back] = foot(-c.rho);
-            const bool back = d_back < d_front;
-            const double v = back ? v_back : v_front;
-            const double size = s.radius + c.rho + std::abs(c.z);
-            if (c.rho <= kOnAxis * size || std::abs(s.radius + v * k) <= kOnAxis * size)
-              return {undefined_angle(near_u), v};
-            return {placed_angle(back ? c.phi + kPi : c.phi, near_u), v};
-          },
-          [&](const SphereSurface& s) -> Eigen::Vector2d {
-            const Cylindrical c = cylindrical(s.frame, p);
-            return {axial_angle(c, s.radius + c.rho + std::abs(c.z)), std::atan2(c.z, c.rho)};
-          },
-          [&](const TorusSurface& s) -> Eigen::Vector2d {
-            // In p's meridian plane the torus is two circles of radius r about (+-R, 0) over signed radii:
-            // the nearer wins (the second is met only when r > R, or for points off the surface).
-            const Cylindrical c = cylindrical(s.frame, p);
-            const double big = s.major_radius, small = s.minor_radius;
-            const double d_front = std::abs(std::hypot(c.rho - big, c.z) - small);
-            const double d_back = std::abs(std::hypot(-c.rho - big, c.z) - small);
-            const bool back = d_back < d_front;
-            const double signed_rho = back ? -c.rho : c.rho;
-            const double size = big + small + c.rho + std::abs(c.z);
-            const double a = c.rho <= kOnAxis * size ? undefined_angle(near_u)
-                                                     : placed_angle(back ? c.phi + kPi : c.phi, near_u);
-            const double b = std::hypot(signed_rho - big, c.z) <= kOnAxis * size
-                                 ? undefined_angle(near_v)
-                                 : placed_angle(std::atan2(c.z, signed_rho - big), near_v);
-            return {a, b};
-          },
-          [&](const RevolutionSurface& s) -> Eigen::Vector2d { return revolution_inverse(s, p, near); },
-          [&](const ExtrusionSurface& s) -> Eigen::Vector2d { return extrusion_inverse(s, p, near); },
-      },
-      surface);
+  return std::visit(Overloaded{
+                        [&](const PlaneSurface& s) -> Eigen::Vector2d { return to_local(s.frame, p).head<2>(); },
+                        [&](const CylinderSurface& s) -> Eigen::Vector2d {
+                          const Cylindrical c = cylindrical(s.frame, p);
+                          return {axial_angle(c, s.radius + c.rho), c.z};
+                        },
+                        [&](const ConeSurface& s) -> Eigen::Vector2d {
+                          // In p's meridian plane the cone is the line (r + v k, v) over signed radii: nearest v for
+                          // radius +rho (angle phi) and -rho (angle phi + pi, the other nappe); the nearer wins.
+                          const Cylindrical c = cylindrical(s.frame, p);
+                          const double k = std::tan(s.semi_angle);
+                          auto foot = [&](double signed_rho) {
+                            const double v = (c.z + k * (signed_rho - s.radius)) / (1 + k * k);
+                            return std::pair{v, std::hypot(s.radius + v * k - signed_rho, v - c.z)};
+                          };
+                          const auto [v_front, d_front] = foot(c.rho);
+                          const auto [v_back, d_back] = foot(-c.rho);
+                          const bool back = d_back < d_front;
+                          const double v = back ? v_back : v_front;
+                          const double size = s.radius + c.rho + std::abs(c.z);
+                          if (c.rho <= kOnAxis * size || std::abs(s.radius + v * k) <= kOnAxis * size)
+                            return {undefined_angle(near_u), v};
+                          return {placed_angle(back ? c.phi + kPi : c.phi, near_u), v};
+                        },
+                        [&](const SphereSurface& s) -> Eigen::Vector2d {
+                          const Cylindrical c = cylindrical(s.frame, p);
+                          return {axial_angle(c, s.radius + c.rho + std::abs(c.z)), std::atan2(c.z, c.rho)};
+                        },
+                        [&](const TorusSurface& s) -> Eigen::Vector2d {
+                          // In p's meridian plane the torus is two circles of radius r about (+-R, 0) over signed
+                          // radii: the nearer wins (the second is met only when r > R, or for points off the surface).
+                          const Cylindrical c = cylindrical(s.frame, p);
+                          const double big = s.major_radius, small = s.minor_radius;
+                          const double d_front = std::abs(std::hypot(c.rho - big, c.z) - small);
+                          const double d_back = std::abs(std::hypot(-c.rho - big, c.z) - small);
+                          const bool back = d_back < d_front;
+                          const double signed_rho = back ? -c.rho : c.rho;
+                          const double size = big + small + c.rho + std::abs(c.z);
+                          const double a = c.rho <= kOnAxis * size ? undefined_angle(near_u)
+                                                                   : placed_angle(back ? c.phi + kPi : c.phi, near_u);
+                          const double b = std::hypot(signed_rho - big, c.z) <= kOnAxis * size
+                                               ? undefined_angle(near_v)
+                                               : placed_angle(std::atan2(c.z, signed_rho - big), near_v);
+                          return {a, b};
+                        },
+                        [&](const RevolutionSurface& s) -> Eigen::Vector2d { return revolution_inverse(s, p, near); },
+                        [&](const ExtrusionSurface& s) -> Eigen::Vector2d { return extrusion_inverse(s, p, near); },
+                    },
+                    surface);
 }
 
 namespace {
@@ -352,8 +362,12 @@ NurbsCurve profile_piece(const NurbsCurve& profile, double t0, double t1, const 
 }
 
 const char* step_name(const AnalyticSurface& surface) {
-  static constexpr const char* names[] = {"plane",           "cylindrical surface",  "conical surface",
-                                          "spherical surface", "toroidal surface",   "surface of revolution",
+  static constexpr const char* names[] = {"plane",
+                                          "cylindrical surface",
+                                          "conical surface",
+                                          "spherical surface",
+                                          "toroidal surface",
+                                          "surface of revolution",
                                           "surface of linear extrusion"};
   return names[surface.index()];
 }
@@ -407,8 +421,7 @@ SurfaceConversion analytic_to_nurbs(const AnalyticSurface& surface, const Natura
             const double k = std::tan(s.semi_angle);
             return tensor(unit_arc(*out.arcs[0]), segment(box.v0, box.v1), [&](const auto& c, const auto& v) {
               // Linear in v along each ruling, so the apex (radius 0) and beyond stay exact.
-              return Eigen::Vector3d(s.frame.origin +
-                                     (s.radius + v.x() * k) * (c.x() * s.frame.x + c.y() * s.frame.y) +
+              return Eigen::Vector3d(s.frame.origin + (s.radius + v.x() * k) * (c.x() * s.frame.x + c.y() * s.frame.y) +
                                      v.x() * s.frame.z);
             });
           },
@@ -428,9 +441,9 @@ SurfaceConversion analytic_to_nurbs(const AnalyticSurface& surface, const Natura
             check_positive(s.major_radius, "major radius", entity);
             check_positive(s.minor_radius, "minor radius", entity);
             return tensor(unit_arc(*out.arcs[0]), unit_arc(*out.arcs[1]), [&](const auto& a, const auto& b) {
-              return Eigen::Vector3d(s.frame.origin +
-                                     (s.major_radius + s.minor_radius * b.x()) * (a.x() * s.frame.x + a.y() * s.frame.y) +
-                                     s.minor_radius * b.y() * s.frame.z);
+              return Eigen::Vector3d(
+                  s.frame.origin + (s.major_radius + s.minor_radius * b.x()) * (a.x() * s.frame.x + a.y() * s.frame.y) +
+                  s.minor_radius * b.y() * s.frame.z);
             });
           },
           [&](const RevolutionSurface& s) {

@@ -80,9 +80,9 @@ std::array<bool, 2> angular_directions(const AnalyticSurface& surface);
 // sheet); revolution (nearest in the meridian half-plane) and extrusion (nearest in the plane across the
 // direction) by Newton on the profile (cut at its C0 knots) from every local minimum of 8 samples per
 // knot span, the nearest result kept; with `near`, Newton from near's profile parameter too, whose
-// result is kept unless another is nearer (beyond rounding): continuity along a trim. Angles: when `near` is given, within pi of near's
-// (unwrapped), else in (-pi, pi]. On the axis (pole, apex, axis of revolution; the torus's centre circle
-// for b) the angle is undefined: near's, else 0.
+// result is kept unless another is nearer (beyond rounding): continuity along a trim.
+// Angles: when `near` is given, within pi of near's (unwrapped), else in (-pi, pi]. On the axis (pole,
+// apex, axis of revolution; the torus's centre circle for b) the angle is undefined: near's, else 0.
 Eigen::Vector2d natural_inverse(const AnalyticSurface& surface, const Eigen::Vector3d& p,
                                 const std::optional<Eigen::Vector2d>& near = {});
 
@@ -95,7 +95,7 @@ struct NaturalBox {
 
 struct SurfaceConversion {
   NurbsSurface surface;
-  std::array<std::optional<ArcSpans>, 2> arcs;  // per direction: the arc map, or empty for identity
+  std::array<std::optional<ArcSpans>, 2> arcs;                     // per direction: the arc map, or empty for identity
   Eigen::Vector2d to_nurbs(const Eigen::Vector2d& natural) const;  // exact (arc_parameter per angle)
   Eigen::Vector2d to_natural(const Eigen::Vector2d& nurbs) const;  // arc_angle per angle
 };

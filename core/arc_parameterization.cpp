@@ -35,13 +35,12 @@ double local_parameter(double off, double t) {
 }  // namespace
 
 ArcSpans arc_spans(double start_angle, double end_angle) {
-  if (!std::isfinite(start_angle) || !std::isfinite(end_angle))
-    throw GeometryError("arc", "its angles are not finite");
+  if (!std::isfinite(start_angle) || !std::isfinite(end_angle)) throw GeometryError("arc", "its angles are not finite");
   const double sweep = end_angle - start_angle;
-  if (!(sweep > 0)) throw GeometryError("arc", "its end angle " + std::to_string(end_angle) +
-                                                   " does not exceed its start angle " + std::to_string(start_angle));
-  if (sweep > kTwoPi + 1e-9)
-    throw GeometryError("arc", "its sweep " + std::to_string(sweep) + " exceeds 2 pi");
+  if (!(sweep > 0))
+    throw GeometryError("arc", "its end angle " + std::to_string(end_angle) + " does not exceed its start angle " +
+                                   std::to_string(start_angle));
+  if (sweep > kTwoPi + 1e-9) throw GeometryError("arc", "its sweep " + std::to_string(sweep) + " exceeds 2 pi");
   const int spans = std::clamp(static_cast<int>(std::ceil(sweep / (std::numbers::pi / 2) - 1e-9)), 1, 4);
   return {start_angle, end_angle, spans};
 }

@@ -13,7 +13,8 @@ AxisFrame axis_frame(const Eigen::Vector3d& origin, const std::optional<Eigen::V
   frame.origin = origin;
   if (axis) {
     const double length = axis->norm();
-    if (!std::isfinite(length) || length == 0.0) throw GeometryError(entity, "the placement's axis is zero or not finite");
+    if (!std::isfinite(length) || length == 0.0)
+      throw GeometryError(entity, "the placement's axis is zero or not finite");
     frame.z = *axis / length;
   }
   Eigen::Vector3d ref;

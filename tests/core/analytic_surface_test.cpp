@@ -1,6 +1,8 @@
 // analytic_surface: every surface's NURBS against its closed form at 200 random natural points, the
 // parameter maps as inverses, point inversion back to the natural parameters, the sphere's and torus's
 // areas by Gauss-Legendre over the NURBS, exact knots, refusals.
+#include "core/analytic_surface.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 #include <string>
 
 #include "analysis/eval/span_quadrature.hpp"
-#include "core/analytic_surface.hpp"
 #include "core/geometry_error.hpp"
 #include "core/knot_vector.hpp"
 
@@ -215,7 +216,8 @@ TEST(AnalyticSurface, PointsOffTheSurfaceFindTheirFoot) {
       const double h = 1e-6;
       for (int d = 0; d < 2; ++d) {
         const Eigen::Vector2d step = h * Eigen::Vector2d::Unit(d);
-        const Eigen::Vector3d tangent = (natural_point(c.surface, y + step) - natural_point(c.surface, y - step)) / (2 * h);
+        const Eigen::Vector3d tangent =
+            (natural_point(c.surface, y + step) - natural_point(c.surface, y - step)) / (2 * h);
         EXPECT_LT(std::abs(gap.dot(tangent)), 1e-7 * c.size * tangent.norm()) << x.transpose();
       }
     }
@@ -237,11 +239,14 @@ TEST(AnalyticSurface, Refusals) {
   EXPECT_EQ(message(TorusSurface{f, 0, 1}, {0, 1, 0, 1}), "toroidal surface: major radius 0.000000 is not positive");
   EXPECT_EQ(message(ConeSurface{f, -1, 0.3}, {0, 1, 0, 1}), "conical surface: radius -1.000000 is negative");
   EXPECT_EQ(message(ConeSurface{f, 1, kPi / 2}, {0, 1, 0, 1}).find("conical surface: semi-angle"), 0u);
-  EXPECT_EQ(message(PlaneSurface{f}, {0, 1, 2, 2}), "plane: its parameter box [0.000000, 1.000000] x [2.000000, 2.000000] is empty");
-  EXPECT_NE(message(CylinderSurface{f, 1}, {0, 2 * kPi + 1e-8, 0, 1}).find("cylindrical surface: angular range: its sweep"),
-            std::string::npos);
+  EXPECT_EQ(message(PlaneSurface{f}, {0, 1, 2, 2}),
+            "plane: its parameter box [0.000000, 1.000000] x [2.000000, 2.000000] is empty");
+  EXPECT_NE(
+      message(CylinderSurface{f, 1}, {0, 2 * kPi + 1e-8, 0, 1}).find("cylindrical surface: angular range: its sweep"),
+      std::string::npos);
   EXPECT_NE(message(TorusSurface{f, 2, 1}, {0, 1, 0, 7}).find("exceeds 2 pi"), std::string::npos);
-  EXPECT_NE(message(SphereSurface{f, 1}, {0, 1, -2, 0}).find("spherical surface: its latitude range"), std::string::npos);
+  EXPECT_NE(message(SphereSurface{f, 1}, {0, 1, -2, 0}).find("spherical surface: its latitude range"),
+            std::string::npos);
   EXPECT_NE(message(RevolutionSurface{twisted_profile(), {0, 0, 0}, {0, 0, 0}}, {0, 1, 0, 1}).find("direction is zero"),
             std::string::npos);
   EXPECT_NE(message(ExtrusionSurface{cubic_profile(), {0, 0, 1}}, {-2, 1, 0, 1}).find("leaves the profile's domain"),

@@ -1,5 +1,7 @@
 // arc_parameterization and conic_curves: the unit arc lies on the circle at the angle arc_angle says,
 // the parameter maps are inverses and equal the angle at knots; circle length by quadrature.
+#include "core/arc_parameterization.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include <random>
 
 #include "analysis/eval/span_quadrature.hpp"
-#include "core/arc_parameterization.hpp"
 #include "core/conic_curves.hpp"
 #include "core/geometry_error.hpp"
 
@@ -55,7 +56,8 @@ TEST(ArcParameterization, UnitArcLiesOnTheCircleAtArcAngle) {
 }
 
 TEST(ArcParameterization, ParameterEqualsAngleAtEveryKnot) {
-  for (const auto& [a0, a1] : {std::pair{0.0, 2 * kPi}, {-0.3, 2.9}, {1.0, 1.2}, {-kPi, kPi}, {5.0, 5.0 + 3 * kPi / 2}}) {
+  for (const auto& [a0, a1] :
+       {std::pair{0.0, 2 * kPi}, {-0.3, 2.9}, {1.0, 1.2}, {-kPi, kPi}, {5.0, 5.0 + 3 * kPi / 2}}) {
     const ArcSpans arc = arc_spans(a0, a1);
     const NurbsCurve curve = unit_arc(arc);
     for (double knot : curve.knots) {

@@ -1,7 +1,8 @@
 // axis_frame: STEP's AXIS2_PLACEMENT_3D rules, and to_world / to_local as inverses.
+#include "core/axis_frame.hpp"
+
 #include <gtest/gtest.h>
 
-#include "core/axis_frame.hpp"
 #include "core/geometry_error.hpp"
 
 namespace cadnurbs {
