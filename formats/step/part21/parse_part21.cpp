@@ -69,9 +69,12 @@ class Part21Parser {
   Part21Parser(std::string_view bytes, const std::string& path, const Part21Limits& limits)
       : p_(bytes.data()), end_(bytes.data() + bytes.size()), path_(path), limits_(limits) {
     if (bytes.size() >= (std::uint64_t{1} << 32)) fail("a file of 4 GiB or more (the entity table indexes with 32 bits)");
-    model_.slots_.reserve(bytes.size() / 24);
-    model_.entities_.reserve(bytes.size() / 64);
-    model_.records_.reserve(bytes.size() / 64);
+    // Library parts hold an instance per 47 bytes and a value per 13: reserved so that the tables do not
+    // grow by copying (untouched reserve costs address space only).
+    model_.slots_.reserve(bytes.size() / 10);
+    model_.entities_.reserve(bytes.size() / 32);
+    model_.records_.reserve(bytes.size() / 32);
+    model_.text_.reserve(bytes.size() / 8);
   }
 
   Model run() {
@@ -197,11 +200,21 @@ class Part21Parser {
   }
 
   TypeId intern(std::string_view name) {
+    // A direct-mapped cache before the hash table: a file uses a few dozen types, over and over.
+    const std::size_t key = (name.size() * 31 + static_cast<unsigned char>(name[name.size() / 2]) * 7 +
+                             static_cast<unsigned char>(name.back())) % type_cache_.size();
+    const TypeId cached = type_cache_[key];
+    if (cached != none && model_.type_names_[cached] == name) return cached;
     const auto found_type = model_.type_ids_.find(name);
-    if (found_type != model_.type_ids_.end()) return found_type->second;
-    const auto id = static_cast<TypeId>(model_.type_names_.size());
-    model_.type_names_.emplace_back(name);
-    model_.type_ids_.emplace(std::string(name), id);
+    TypeId id = 0;
+    if (found_type != model_.type_ids_.end()) {
+      id = found_type->second;
+    } else {
+      id = static_cast<TypeId>(model_.type_names_.size());
+      model_.type_names_.emplace_back(name);
+      model_.type_ids_.emplace(std::string(name), id);
+    }
+    type_cache_[key] = id;
     return id;
   }
 
@@ -259,16 +272,18 @@ class Part21Parser {
   // Digits at p_ (after '#') as an entity number.
   std::int64_t entity_number() {
     const char* start = p_;
-    std::int64_t number = 0;
+    std::uint64_t number = 0;
     while (p_ < end_ && is_digit(*p_)) {
-      if (number > (std::numeric_limits<std::int64_t>::max() - 9) / 10)
-        fail("the entity number " + quoted(std::string_view(start - 1, p_ - start + 1)) + "... is too large");
-      number = number * 10 + (*p_ - '0');
+      number = number * 10 + static_cast<std::uint64_t>(*p_ - '0');
       ++p_;
+      // 18 digits always fit; past them, check before each digit more
+      if (p_ - start >= 18 && p_ < end_ && is_digit(*p_) &&
+          number > (static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()) - 9) / 10)
+        fail("the entity number " + quoted(std::string_view(start - 1, p_ - start + 1)) + "... is too large");
     }
     if (p_ == start) fail("'#' without an entity number");
     if (number == 0) fail("the entity number #0 (numbers start at 1)");
-    return number;
+    return static_cast<std::int64_t>(number);
   }
 
   void read_instance() {
@@ -661,7 +676,14 @@ class Part21Parser {
   std::string_view type_;    // its (first) type, or the header entity's
   std::vector<Frame> frames_;
   std::vector<Slot> pending_;
+  std::array<TypeId, 256> type_cache_ = filled_with_none();
   Model model_;
+
+  static std::array<TypeId, 256> filled_with_none() {
+    std::array<TypeId, 256> ids;
+    ids.fill(none);
+    return ids;
+  }
 };
 
 Model parse_part21(std::string_view bytes, const std::string& path, const Part21Limits& limits) {
