@@ -58,6 +58,9 @@ TEST(Part21Refusals, Limits) {
             "bad.step: line 5, #1 A: a list of 5 items or more (the limit is 4)");
   EXPECT_EQ(refusal(with_data("#1=A(1,2,3,4,5);"), small),
             "bad.step: line 5, #1 A: a list of 5 items or more (the limit is 4)");
+  EXPECT_EQ(refusal(with_data("#1=(A()B()C()D());"), small), "accepted");
+  EXPECT_EQ(refusal(with_data("#1=(A()B()C()D()E());"), small),
+            "bad.step: line 5, #1 A: a list of 5 items or more (the limit is 4)");
 }
 
 TEST(Part21Refusals, Numbers) {

@@ -194,6 +194,16 @@ TEST(Part21, SparseEntityNumbersAndUserDefinedKeyword) {
   EXPECT_EQ(model.parameter(model.records(0)[0], 0).reference(), 1u);
 }
 
+TEST(Part21, TypeRepeatedInAComplexInstanceListedOnce) {
+  const Model model = parse_part21("ISO-10303-21;HEADER;ENDSEC;DATA;#1=(A()B(2)A(1));#2=A(3);ENDSEC;END-ISO-10303-21;", "t.step");
+  const TypeId a = model.type_named("A");
+  ASSERT_EQ(model.of_type(a).size(), 2u);
+  EXPECT_EQ(model.of_type(a)[0], 0u);
+  EXPECT_EQ(model.of_type(a)[1], 1u);
+  EXPECT_EQ(model.record(0, a), &model.records(0)[0]);  // the first one written
+  EXPECT_EQ(model.of_type(model.type_named("B")).size(), 1u);
+}
+
 TEST(Part21, TinyNumbersUnderflowToZeroOrSubnormal) {
   const Model model = parse_part21("ISO-10303-21;HEADER;ENDSEC;DATA;#1=A(1.E-400,-1.E-310);ENDSEC;END-ISO-10303-21;", "t.step");
   EXPECT_EQ(model.parameter(model.records(0)[0], 0).number(), 0.0);

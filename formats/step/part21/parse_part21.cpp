@@ -317,6 +317,7 @@ class Part21Parser {
           fail("expected a type name or ')' in a complex instance, found " + found());
         }
         if (entity.record_count == 0) type_ = part;
+        if (entity.record_count == limits_.max_list) refuse_long_list();  // its records are its list's items
         read_record(part, 2);
         ++entity.record_count;
       }
@@ -342,11 +343,14 @@ class Part21Parser {
     model_.records_.push_back({type, first, count});
   }
 
+  [[noreturn]] void refuse_long_list() const {
+    fail("a list of " + std::to_string(limits_.max_list + 1) + " items or more (the limit is " +
+         std::to_string(limits_.max_list) + ")");
+  }
+
   void push(const Slot& slot) {
     pending_.push_back(slot);
-    if (pending_.size() - frames_.back().start > limits_.max_list)
-      fail("a list of " + std::to_string(limits_.max_list + 1) + " items or more (the limit is " +
-           std::to_string(limits_.max_list) + ")");
+    if (pending_.size() - frames_.back().start > limits_.max_list) refuse_long_list();
   }
 
   void open(FrameKind kind, TypeId type, std::string_view name, int base_depth) {
@@ -650,21 +654,25 @@ class Part21Parser {
   void index_types() {
     const std::size_t types = model_.type_names_.size();
     std::vector<std::uint32_t> counts(types + 1, 0);
-    auto for_each_type = [&](const Model::Entity& entity, auto&& visit) {
+    // A type written twice in one complex instance lists it once: last_holder remembers who came last
+    // (linear, where comparing records pairwise would be quadratic in a hostile instance's records).
+    std::vector<EntityId> last_holder(types, none);
+    auto for_each_type = [&](EntityId id, auto&& visit) {
+      const Model::Entity& entity = model_.entities_[id];
       for (std::uint32_t r = 0; r < entity.record_count; ++r) {
         const TypeId type = model_.records_[entity.first_record + r].type;
-        bool repeated = false;
-        for (std::uint32_t earlier = 0; earlier < r; ++earlier)
-          repeated = repeated || model_.records_[entity.first_record + earlier].type == type;
-        if (!repeated) visit(type);
+        if (last_holder[type] == id) continue;
+        last_holder[type] = id;
+        visit(type);
       }
     };
-    for (const Model::Entity& entity : model_.entities_) for_each_type(entity, [&](TypeId type) { ++counts[type + 1]; });
+    for (EntityId id = 0; id < model_.entities_.size(); ++id) for_each_type(id, [&](TypeId type) { ++counts[type + 1]; });
     for (std::size_t t = 0; t < types; ++t) counts[t + 1] += counts[t];
     model_.type_first_ = counts;
     model_.type_entities_.resize(counts[types]);
+    std::fill(last_holder.begin(), last_holder.end(), none);
     for (EntityId id = 0; id < model_.entities_.size(); ++id)
-      for_each_type(model_.entities_[id], [&](TypeId type) { model_.type_entities_[counts[type]++] = id; });
+      for_each_type(id, [&](TypeId type) { model_.type_entities_[counts[type]++] = id; });
   }
 
   const char* p_;
