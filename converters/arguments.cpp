@@ -97,12 +97,21 @@ int Arguments::integer(const std::string& name, int fallback) const {
   return static_cast<int>(x);
 }
 
+const OptionSpec& step_reader_option() {
+  static const OptionSpec option = {
+      "reader", "native|occt",
+      "STEP: our own reader only, or OpenCASCADE's only (default: our own, and OpenCASCADE's\n"
+      "for a file it cannot read, saying which entity sent the file there)"};
+  return option;
+}
+
 const std::vector<OptionSpec>& read_limit_options() {
   static const std::vector<OptionSpec> options = {
       {"time-limit", "S",
        "STEP/IGES: give up reading after S seconds, of wall or CPU time (default 120);\n"
        "OpenCASCADE reads in a child process, so a crash or a hang in it is reported"},
       {"memory-limit", "MB", "STEP/IGES: the reading process's address-space limit (default 4096)"},
+      step_reader_option(),
   };
   return options;
 }
@@ -121,6 +130,13 @@ ProcessLimits read_limits(const Arguments& a) {
     throw UsageError("--memory-limit needs a whole number of megabytes from 1, not '" + a.value("memory-limit") + "'");
   limits.megabytes = static_cast<long>(megabytes);
   return limits;
+}
+
+StepReaderChoice step_reader_choice(const Arguments& a) {
+  if (!a.has("reader")) return StepReaderChoice::native_then_occt;
+  if (a.value("reader") == "native") return StepReaderChoice::native;
+  if (a.value("reader") == "occt") return StepReaderChoice::occt;
+  throw UsageError("--reader takes native or occt, not '" + a.value("reader") + "'");
 }
 
 Arguments parse_arguments(const CommandSpec& spec, const std::vector<std::string>& args) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "converters/limited_child.hpp"
+#include "converters/walled_read.hpp"
 
 namespace cadnurbs {
 
@@ -53,6 +54,9 @@ struct CommandSpec {
 // (read_limits).
 const std::vector<OptionSpec>& read_limit_options();
 
+// --reader native|occt (in read_limit_options; batch takes it alone).
+const OptionSpec& step_reader_option();
+
 // `options` followed by read_limit_options().
 std::vector<OptionSpec> with_read_limits(std::vector<OptionSpec> options);
 
@@ -60,6 +64,9 @@ std::vector<OptionSpec> with_read_limits(std::vector<OptionSpec> options);
 // defaults where they are not given. Refuses (UsageError) a limit that is not positive, or a memory limit
 // above 2^40 MB.
 ProcessLimits read_limits(const Arguments& a);
+
+// --reader: which STEP reader (UsageError for another value).
+StepReaderChoice step_reader_choice(const Arguments& a);
 
 // The options of `spec` that take a value take one ("-o" counts as "--output"), the others none; "--help"
 // is a flag of every command. Throws UsageError "unknown option '--x' (see cadnurbs NAME --help)",

@@ -28,6 +28,7 @@ const CommandSpec& batch_command_spec() {
       {
           {"output", "OUT_DIR", ""},
           {"jobs", "N", "workers at a time (default: the number of cores)"},
+          step_reader_option(),
           {"to", "EXT,...", "outputs per part (default x3dv; any output extension of convert)"},
           {"inputs", "EXT,...",
            "only the parts of these input formats (such as step,iges: a library's\n"
@@ -80,6 +81,7 @@ int run_batch(const std::vector<std::string>& args, const CommandContext& contex
   if (a.positional.size() != 1 || !a.has("output")) throw UsageError("needs one IN_DIR and -o OUT_DIR (see --help)");
   BatchOptions options;
   options.read.brep.walled = context.read_wall;
+  options.read.brep.step_reader = step_reader_choice(a);
   options.read.brep.child_stage_hook = context.child_stage_hook;
   options.read.brep.always_exec = context.always_exec;
   options.in_dir = a.positional[0];

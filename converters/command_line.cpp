@@ -30,6 +30,7 @@ SceneReadOptions scene_read_options(const Arguments& a, const CommandContext& co
   options.homogeneous_control_points = !a.has("euclidean");
   options.brep.walled = context.read_wall;
   options.brep.limits = read_limits(a);
+  options.brep.step_reader = step_reader_choice(a);
   options.brep.child_stage_hook = context.child_stage_hook;
   options.brep.always_exec = context.always_exec;
   return options;

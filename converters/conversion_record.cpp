@@ -18,6 +18,7 @@ std::string record_error(std::string message, const std::string& input) {
 PartRecord conversion_record(const std::string& input, const BrepTranslation& loaded) {
   PartRecord record;
   record.input = input;
+  for (const auto& line : loaded.notes) record.warnings.push_back(line);
   for (const auto& line : loaded.repairs) record.warnings.push_back(line);
   for (const auto& f : loaded.fallbacks)
     record.warnings.push_back(f.node + " face " + std::to_string(f.face_index) + " (" + f.surface_type +

@@ -180,6 +180,7 @@ int run_convert(const std::vector<std::string>& args, const CommandContext& cont
 
   const LoadedInput input = load_input(request);
   const BrepTranslation& loaded = input.loaded;
+  for (const auto& line : loaded.notes) std::cerr << in << ": " << line << "\n";
   for (const auto& line : loaded.repairs) std::cerr << in << ": " << line << "\n";
   for (const auto& f : loaded.fallbacks)
     std::cerr << in << ": " << f.node << " face " << f.face_index << " (" << f.surface_type

@@ -19,6 +19,7 @@
 #include "formats/iges/iges_writer.hpp"
 #include "formats/obj/obj_writer.hpp"
 #include "formats/ply/ply_writer.hpp"
+#include "formats/step/native/read_step_native.hpp"
 #include "formats/step/step_reader.hpp"
 #include "formats/step/step_writer.hpp"
 #include "formats/stl/stl_reader.hpp"
@@ -54,8 +55,25 @@ TriangleMesh flatten_meshes(const Scene& scene, const std::string& path) {
 }
 
 // Behind the wall in the cadnurbs command (a crash or hang in OCCT costs a child process), see walled_read.
+// Our own reader first (in this process: it is bounded and fuzzed, it needs no wall), OpenCASCADE's for a
+// file it cannot read, unless --reader chose one.
 BrepTranslation read_brep_step(const std::string& path, const SceneReadOptions& options) {
-  return read_brep(path, "STEP", options.brep);
+  const StepReaderChoice choice = options.brep.step_reader;
+  if (choice == StepReaderChoice::occt) return read_brep(path, "STEP", options.brep);
+  std::string why;
+  try {
+    return read_step_native(path);
+  } catch (const step::OutsideNativeSubset& outside) {
+    if (choice == StepReaderChoice::native) throw FileError(path + ": outside the native STEP reader's subset: " + outside.what());
+    why = outside.what();
+  } catch (const std::exception& error) {
+    if (choice == StepReaderChoice::native) throw;
+    why = error.what();
+    if (why.starts_with(path + ": ")) why.erase(0, path.size() + 2);
+  }
+  BrepTranslation out = read_brep(path, "STEP", options.brep);
+  out.notes.insert(out.notes.begin(), "read by OpenCASCADE: our STEP reader stopped at " + why);
+  return out;
 }
 BrepTranslation read_brep_iges(const std::string& path, const SceneReadOptions& options) {
   return read_brep(path, "IGES", options.brep);

@@ -15,7 +15,12 @@
 namespace cadnurbs {
 
 // How a STEP or IGES file is read.
+// Which reader reads STEP: ours, falling back to OpenCASCADE's for a file outside its subset (said in
+// BrepTranslation::notes); ours only; OpenCASCADE's only.
+enum class StepReaderChoice { native_then_occt, native, occt };
+
 struct BrepReadOptions {
+  StepReaderChoice step_reader = StepReaderChoice::native_then_occt;
   // Behind the wall. Only an executable that serves `__read-brep` (cadnurbs; tests' own copies of its
   // main) may ask for it; without it STEP and IGES are read in this process.
   bool walled = false;

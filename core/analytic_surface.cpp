@@ -137,7 +137,9 @@ double profile_minimum(const NurbsCurve& profile, std::optional<double> near, Te
   }
   if (hint) {
     const double scale = std::max(1.0, curve_point(profile, near_t).norm());
-    if (near_f <= best_f * (1 + 1e-9) + 0.5 * std::pow(1e-12 * scale, 2)) return near_t;
+    // Continuity wins over a rival within 1e-9 of the size: where the surface meets itself (a profile
+    // crossing the axis) both are on it, and only round-off tells them apart.
+    if (std::sqrt(2 * near_f) <= std::sqrt(2 * best_f) + 1e-9 * scale) return near_t;
   }
   return best;
 }

@@ -22,6 +22,9 @@ struct BrepTranslation {
   // One line per repair of a face's trimming loops (repair_trimming_loops), "PATH face N (TYPE): what";
   // load_scene adds those of any other input.
   std::vector<std::string> repairs;
+  // What the user should know about how the file was read, one line each (e.g. which STEP reader read it
+  // and why); printed with the repairs.
+  std::vector<std::string> notes;
   int face_count = 0;                   // faces in the scene: trimmed NURBS + fallbacks
   // Indexed by TrimEdgeRef::edge: true for a degenerated edge (a pole of a sphere, the apex of a cone),
   // whose 3D image is a single point.

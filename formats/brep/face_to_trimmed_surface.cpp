@@ -17,6 +17,7 @@
 #include "core/geometry_error.hpp"
 #include "core/loop_closure.hpp"
 #include "core/loop_orientation.hpp"
+#include "core/mirror_in_u.hpp"
 #include "core/number_format.hpp"
 #include "formats/brep/direct_face.hpp"
 #include "formats/brep/face_pcurves.hpp"
@@ -132,26 +133,6 @@ void unperiodize(Handle(Geom_BSplineSurface)& surface, std::vector<WireUses>& wi
     }
     if (direction == 0 && surface->IsUPeriodic()) surface->SetUNotPeriodic();
     if (direction == 1 && surface->IsVPeriodic()) surface->SetVNotPeriodic();
-  }
-}
-
-void mirror_u(NurbsSurface& s) {
-  const double a = s.u_start(), b = s.u_end();
-  for (int j = 0; j < s.v_count; ++j) {
-    std::reverse(s.points.begin() + s.index(0, j), s.points.begin() + s.index(0, j) + s.u_count);
-    if (s.is_rational()) std::reverse(s.weights.begin() + s.index(0, j), s.weights.begin() + s.index(0, j) + s.u_count);
-  }
-  const std::vector<double> k = s.u_knots;
-  for (size_t m = 0; m < k.size(); ++m) s.u_knots[m] = a + b - k[k.size() - 1 - m];
-}
-
-void mirror_u(TrimLoop& loop, double a, double b) {
-  for (auto& segment : loop.segments) {
-    if (auto* c = std::get_if<NurbsCurve>(&segment)) {
-      for (auto& p : c->points) p.x() = a + b - p.x();
-    } else {
-      for (auto& p : std::get<Polyline2D>(segment).points) p.x() = a + b - p.x();
-    }
   }
 }
 
@@ -287,11 +268,7 @@ TrimmedSurface face_to_trimmed_surface(const TopoDS_Face& face, EdgeNumbering& e
   for (size_t w = 0; w < wires.size(); ++w)
     out.loops.push_back(close_wire(wires[w], surface, domain_size, static_cast<int>(w) + 1));
 
-  if (face.Orientation() == TopAbs_REVERSED) {
-    const double a = out.surface.u_start(), b = out.surface.u_end();
-    mirror_u(out.surface);
-    for (auto& loop : out.loops) mirror_u(loop, a, b);
-  }
+  if (face.Orientation() == TopAbs_REVERSED) mirror_in_u(out);
   orient_loops(out.loops);
   validate(out, "face");
   return out;

@@ -1,0 +1,369 @@
+#include "formats/step/native/native_face.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+
+#include "core/analytic_surface.hpp"
+#include "core/arc_parameterization.hpp"
+#include "core/fit_trim_curve.hpp"
+#include "core/geometry_error.hpp"
+#include "core/loop_closure.hpp"
+#include "core/loop_orientation.hpp"
+#include "core/mirror_in_u.hpp"
+#include "core/nearest_surface_point.hpp"
+#include "core/number_format.hpp"
+
+namespace cadnurbs::step {
+
+namespace {
+
+constexpr double kTurn = 2 * std::numbers::pi;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+[[noreturn]] void refuse(const std::string& reason) { throw GeometryError("face", reason); }
+
+// Parameters at which an edge's path is sampled: evenly inside every knot span, enough for its degree.
+std::vector<double> sample_parameters(const NurbsCurve& path) {
+  const int per_span = path.order == 2 ? 2 : 2 * path.order;
+  std::vector<double> out;
+  for (std::size_t k = static_cast<std::size_t>(path.order - 1); k < path.points.size(); ++k) {
+    const double a = path.knots[k], b = path.knots[k + 1];
+    if (!(b > a)) continue;
+    for (int i = 0; i < per_span; ++i) out.push_back(a + (b - a) * i / per_span);
+  }
+  out.push_back(path.domain_end());
+  return out;
+}
+
+// One use of an edge in a loop, sampled and located in the surface's natural parameters.
+struct UseSamples {
+  EdgeUse use;
+  std::vector<double> t;            // path parameters, in the use's direction
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector2d> natural;
+  double offset = 0;  // largest distance of a sample from the surface point it was located at
+};
+
+// The face's surface before its NURBS exists: natural parameters, how to locate points, which are angles.
+class Chart {
+ public:
+  explicit Chart(const StepSurface& surface) : surface_(surface) {
+    if (const auto* analytic = std::get_if<AnalyticSurface>(&surface)) {
+      analytic_ = analytic;
+      angular_ = angular_directions(*analytic);
+      if (const auto* sphere = std::get_if<SphereSurface>(analytic)) axis_ = {sphere->frame.origin, sphere->frame.z};
+      if (const auto* cone = std::get_if<ConeSurface>(analytic)) axis_ = {cone->frame.origin, cone->frame.z};
+      if (const auto* revolution = std::get_if<RevolutionSurface>(analytic))
+        axis_ = {revolution->axis_point, revolution->axis_direction};
+    } else {
+      nurbs_ = &std::get<NurbsSurface>(surface);
+    }
+  }
+
+  bool plane() const { return analytic_ && std::holds_alternative<PlaneSurface>(*analytic_); }
+  bool angular(int d) const { return angular_[d]; }
+  const NurbsSurface* nurbs() const { return nurbs_; }
+
+  Eigen::Vector2d locate(const Eigen::Vector3d& p, const std::optional<Eigen::Vector2d>& near) const {
+    if (analytic_) return natural_inverse(*analytic_, p, near);
+    return near ? nearest_surface_parameter(*nurbs_, p, *near) : nearest_surface_parameter(*nurbs_, p);
+  }
+  Eigen::Vector3d point(const Eigen::Vector2d& natural) const {
+    return analytic_ ? natural_point(*analytic_, natural) : surface_point(*nurbs_, natural.x(), natural.y());
+  }
+  // Whether p is on the axis of revolution, where the angle means nothing (a pole, an apex).
+  bool at_axis(const Eigen::Vector3d& p, double size) const {
+    if (!axis_) return false;
+    const Eigen::Vector3d r = p - axis_->first;
+    return (r - r.dot(axis_->second) * axis_->second).norm() <= 1e-9 * (size + r.norm());
+  }
+
+  // The NURBS parameters, once the angular ranges are fixed.
+  void set_arcs(const std::array<std::optional<ArcSpans>, 2>& arcs) { arcs_ = arcs; }
+  Eigen::Vector2d to_nurbs(const Eigen::Vector2d& natural) const {
+    Eigen::Vector2d out = natural;
+    for (int d = 0; d < 2; ++d)
+      if (arcs_[d]) out[d] = arc_parameter(*arcs_[d], std::clamp(natural[d], arcs_[d]->start, arcs_[d]->end));
+    return out;
+  }
+  Eigen::Vector2d to_natural(const Eigen::Vector2d& uv) const {
+    Eigen::Vector2d out = uv;
+    for (int d = 0; d < 2; ++d)
+      if (arcs_[d]) out[d] = arc_angle(*arcs_[d], std::clamp(uv[d], arcs_[d]->start, arcs_[d]->end));
+    return out;
+  }
+
+ private:
+  const StepSurface& surface_;
+  const AnalyticSurface* analytic_ = nullptr;
+  const NurbsSurface* nurbs_ = nullptr;
+  std::array<bool, 2> angular_{false, false};
+  std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> axis_;  // point, unit direction
+  std::array<std::optional<ArcSpans>, 2> arcs_;
+};
+
+// The loop's uses sampled and located, angles continuous along the loop. Where the loop passes a pole its
+// angle is free, so the rest of the loop is moved by whole turns until the loop closes.
+std::vector<UseSamples> locate_loop(const StepBound& bound, const std::vector<StepEdge>& edges, const Chart& chart,
+                                    double size) {
+  std::vector<UseSamples> out;
+  std::optional<Eigen::Vector2d> previous;
+  std::vector<std::size_t> after_pole;  // uses that start right after a pole
+  for (const EdgeUse& use : bound.uses) {
+    const NurbsCurve& path = edges[static_cast<std::size_t>(use.edge)].path;
+    UseSamples s;
+    s.use = use;
+    s.t = sample_parameters(path);
+    if (!use.forward) std::reverse(s.t.begin(), s.t.end());
+    for (double t : s.t) {
+      s.points.push_back(curve_point(path, t));
+      const Eigen::Vector2d uv = chart.locate(s.points.back(), s.natural.empty() ? previous : s.natural.back());
+      s.natural.push_back(uv);
+    }
+    // Samples on the axis take the angle of their nearest neighbour off it.
+    std::vector<bool> pole(s.points.size());
+    bool any_off = false;
+    for (std::size_t i = 0; i < pole.size(); ++i) any_off |= !(pole[i] = chart.at_axis(s.points[i], size));
+    if (!any_off && pole.size() > 0 && pole[0]) refuse("an edge lies wholly on the axis of revolution");
+    for (std::size_t i = 0; i < pole.size(); ++i) {
+      if (!pole[i]) continue;
+      std::size_t j = i;
+      while (j < pole.size() && pole[j]) ++j;
+      if (j == pole.size()) {
+        j = i;
+        while (pole[j]) --j;
+      }
+      s.natural[i].x() = s.natural[j].x();
+    }
+    for (std::size_t i = 0; i < s.points.size(); ++i)
+      s.offset = std::max(s.offset, (chart.point(s.natural[i]) - s.points[i]).norm());
+    if (s.offset > 1e-3 * (size + 1.0))
+      refuse("an edge lies " + message_number(s.offset) + " mm off the surface");
+    if (pole.front()) after_pole.push_back(out.size());
+    previous = s.natural.back();
+    out.push_back(std::move(s));
+  }
+  for (int d = 0; d < 2; ++d) {
+    if (!chart.angular(d)) continue;
+    const double gap = out.back().natural.back()[d] - out.front().natural.front()[d];
+    const double turns = std::round(gap / kTurn);
+    if (turns == 0) continue;
+    if (std::abs(gap - turns * kTurn) > 1e-6) continue;  // not a whole turn: the closing gap is checked later
+    if (after_pole.empty())
+      refuse("a loop wraps " + message_number(turns) + " times around the surface without closing (no seam edge)");
+    if (after_pole.front() == 0) continue;  // it starts at a pole: the closing joint is the pole's bridge
+    for (std::size_t k = after_pole.front(); k < out.size(); ++k)
+      for (auto& uv : out[k].natural) uv[d] -= turns * kTurn;
+  }
+  return out;
+}
+
+
+// Moves each loop by whole turns in the angular directions so that it lies beside the reference loop (the
+// outer bound): all loops of a face within one turn.
+void gather_loops(std::vector<std::vector<UseSamples>>& loops, std::size_t reference, const Chart& chart) {
+  for (int d = 0; d < 2; ++d) {
+    if (!chart.angular(d)) continue;
+    auto centre = [&](const std::vector<UseSamples>& loop) {
+      double lo = kInfinity, hi = -kInfinity;
+      for (const auto& use : loop)
+        for (const auto& uv : use.natural) lo = std::min(lo, uv[d]), hi = std::max(hi, uv[d]);
+      return 0.5 * (lo + hi);
+    };
+    const double target = centre(loops[reference]);
+    for (auto& loop : loops) {
+      const double turns = std::round((centre(loop) - target) / kTurn);
+      if (turns != 0)
+        for (auto& use : loop)
+          for (auto& uv : use.natural) uv[d] -= turns * kTurn;
+    }
+  }
+}
+
+// Whether the use's samples keep parameter d (an iso-curve of the surface).
+bool keeps(const UseSamples& use, int d, double scale) {
+  double lo = kInfinity, hi = -kInfinity;
+  for (const auto& uv : use.natural) lo = std::min(lo, uv[d]), hi = std::max(hi, uv[d]);
+  return hi - lo <= 1e-9 * std::max(1.0, scale);
+}
+
+NurbsCurve segment_2d(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+  NurbsCurve out;
+  out.dimension = 2;
+  out.order = 2;
+  out.knots = {0, 0, 1, 1};
+  out.points = {Eigen::Vector3d(from.x(), from.y(), 0), Eigen::Vector3d(to.x(), to.y(), 0)};
+  return out;
+}
+
+// The edge's path in a plane's chart: exact (an affine map keeps a NURBS a NURBS).
+NurbsCurve planar_pcurve(const NurbsCurve& path, const AxisFrame& frame, bool forward) {
+  NurbsCurve out = forward ? path : reversed(path);
+  out.dimension = 2;
+  for (auto& p : out.points) {
+    const Eigen::Vector3d local = to_local(frame, p);
+    p = Eigen::Vector3d(local.x(), local.y(), 0);
+  }
+  return out;
+}
+
+// Closes the joints of a loop: moves ends together where they nearly meet, bridges a gap that is one point
+// in 3D (a pole) with a straight segment.
+TrimLoop close_loop(TrimLoop loop, const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& point,
+                    double domain_size, double tolerance) {
+  std::vector<std::pair<std::size_t, Polyline2D>> bridges;
+  const std::size_t n = loop.segments.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t next = (i + 1) % n;
+    const Eigen::Vector2d end = segment_end(loop.segments[i]), start = segment_start(loop.segments[next]);
+    const double gap = (end - start).norm();
+    if (gap == 0.0) continue;
+    const double distance = (point(end) - point(start)).norm();
+    if (gap <= 1e-7 * domain_size && distance <= tolerance) {
+      join_segments(loop.segments[i], loop.segments[next]);
+      continue;
+    }
+    for (int k = 0; k <= 8; ++k)
+      if ((point(end + (start - end) * (k / 8.0)) - point(end)).norm() > tolerance)
+        refuse("its loop does not close: a gap of " + message_number(distance) + " mm between two edges");
+    bridges.emplace_back(i, Polyline2D{{end, start}});
+  }
+  for (auto it = bridges.rbegin(); it != bridges.rend(); ++it) {
+    loop.segments.insert(loop.segments.begin() + static_cast<long>(it->first) + 1, it->second);
+    loop.edges.insert(loop.edges.begin() + static_cast<long>(it->first) + 1, TrimEdgeRef{});
+  }
+  return loop;
+}
+
+double face_size(const StepFace& face, const std::vector<StepEdge>& edges) {
+  Eigen::AlignedBox3d box;
+  for (const auto& bound : face.bounds)
+    for (const auto& use : bound.uses)
+      for (const auto& p : edges[static_cast<std::size_t>(use.edge)].path.points) box.extend(p);
+  return box.isEmpty() ? 0.0 : box.diagonal().norm();
+}
+
+std::size_t reference_bound(const StepFace& face) {
+  for (std::size_t b = 0; b < face.bounds.size(); ++b)
+    if (face.bounds[b].outer) return b;
+  return 0;
+}
+
+TrimmedSurface plane_face(const StepFace& face, const PlaneSurface& plane, const std::vector<StepEdge>& edges,
+                          double tolerance) {
+  TrimmedSurface out;
+  Eigen::AlignedBox2d box;
+  for (const auto& bound : face.bounds) {
+    TrimLoop loop;
+    for (const auto& use : bound.uses) {
+      NurbsCurve curve = planar_pcurve(edges[static_cast<std::size_t>(use.edge)].path, plane.frame, use.forward);
+      for (const auto& p : curve.points) box.extend(Eigen::Vector2d(p.x(), p.y()));
+      loop.segments.emplace_back(std::move(curve));
+      loop.edges.push_back({use.edge, !use.forward});
+    }
+    out.loops.push_back(std::move(loop));
+  }
+  if (box.isEmpty() || !(box.sizes().minCoeff() > 0)) refuse("its loops bound no area in its plane");
+  out.surface = analytic_to_nurbs(AnalyticSurface{plane}, {box.min().x(), box.max().x(), box.min().y(), box.max().y()}).surface;
+  const auto point = [&](const Eigen::Vector2d& uv) { return natural_point(AnalyticSurface{plane}, uv); };
+  for (auto& loop : out.loops) loop = close_loop(std::move(loop), point, box.sizes().maxCoeff(), tolerance);
+  return out;
+}
+
+}  // namespace
+
+TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& edges, double fit_tolerance) {
+  if (face.bounds.empty()) refuse("a face without bounds");
+  const double size = face_size(face, edges);
+  TrimmedSurface out;
+  const auto* analytic = std::get_if<AnalyticSurface>(&face.surface);
+  if (analytic && std::holds_alternative<PlaneSurface>(*analytic)) {
+    out = plane_face(face, std::get<PlaneSurface>(*analytic), edges, fit_tolerance);
+  } else {
+    Chart chart(face.surface);
+    std::vector<std::vector<UseSamples>> loops;
+    for (const auto& bound : face.bounds) loops.push_back(locate_loop(bound, edges, chart, size));
+    gather_loops(loops, reference_bound(face), chart);
+
+    // The natural box of the samples; angles padded a little (curves bulge between samples), within a turn.
+    std::array<double, 2> lo{kInfinity, kInfinity}, hi{-kInfinity, -kInfinity};
+    for (const auto& loop : loops)
+      for (const auto& use : loop)
+        for (const auto& uv : use.natural)
+          for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], uv[d]), hi[d] = std::max(hi[d], uv[d]);
+    std::array<std::optional<ArcSpans>, 2> arcs;
+    const bool sphere = analytic && std::holds_alternative<SphereSurface>(*analytic);
+    if (analytic) {
+      for (int d = 0; d < 2; ++d) {
+        if (!chart.angular(d)) continue;
+        const double extent = hi[d] - lo[d];
+        if (extent > kTurn + 1e-9) refuse("its loops span more than one turn (" + message_number(extent) + " rad)");
+        double pad = std::min(1e-3 * extent, 0.5 * std::max(0.0, kTurn - extent));
+        double a = lo[d] - pad, b = hi[d] + pad;
+        if (sphere && d == 1) a = std::max(a, -0.5 * std::numbers::pi), b = std::min(b, 0.5 * std::numbers::pi);
+        if (!(b > a)) refuse("its loops bound no area");
+        arcs[d] = arc_spans(a, b);
+      }
+      chart.set_arcs(arcs);
+    }
+    const auto point = [&](const Eigen::Vector2d& uv) { return chart.point(chart.to_natural(uv)); };
+    const auto locate = [&](const Eigen::Vector3d& p, const Eigen::Vector2d& previous) {
+      return chart.to_nurbs(chart.locate(p, chart.to_natural(previous)));
+    };
+
+    Eigen::AlignedBox2d uv_box;
+    for (const auto& loop : loops) {
+      TrimLoop trim;
+      for (const auto& use : loop) {
+        const Eigen::Vector2d a = chart.to_nurbs(use.natural.front()), b = chart.to_nurbs(use.natural.back());
+        NurbsCurve curve;
+        bool iso = false;
+        for (int d = 0; d < 2 && !iso; ++d) {
+          if (!keeps(use, d, chart.angular(d) ? 1.0 : hi[d] - lo[d])) continue;
+          // An iso-curve: the straight segment between its ends, the kept parameter exactly the same.
+          Eigen::Vector2d from = a, to = b;
+          to[d] = from[d];
+          curve = segment_2d(from, to);
+          iso = true;
+        }
+        if (!iso) {
+          const NurbsCurve& path = edges[static_cast<std::size_t>(use.use.edge)].path;
+          const double t0 = use.use.forward ? path.domain_start() : path.domain_end();
+          const double t1 = use.use.forward ? path.domain_end() : path.domain_start();
+          // The edge may lie off the surface by the file's precision: the fit can follow it no closer.
+          curve = fit_trim_curve(path, t0, t1, a, locate, point, fit_tolerance + 2 * use.offset).curve;
+        }
+        for (const auto& p : curve.points) uv_box.extend(Eigen::Vector2d(p.x(), p.y()));
+        trim.segments.emplace_back(std::move(curve));
+        trim.edges.push_back({use.use.edge, !use.use.forward});
+      }
+      out.loops.push_back(std::move(trim));
+    }
+    if (analytic) {
+      // Non-angular parameters are the natural ones: the box is the trimming curves' hull (exact cover).
+      NaturalBox box{uv_box.min().x(), uv_box.max().x(), uv_box.min().y(), uv_box.max().y()};
+      if (arcs[0]) box.u0 = arcs[0]->start, box.u1 = arcs[0]->end;
+      if (arcs[1]) box.v0 = arcs[1]->start, box.v1 = arcs[1]->end;
+      if (!(box.u1 > box.u0) || !(box.v1 > box.v0)) refuse("its loops bound no area");
+      out.surface = analytic_to_nurbs(*analytic, box).surface;
+    } else {
+      out.surface = *chart.nurbs();
+    }
+    const double domain_size =
+        std::max(out.surface.u_end() - out.surface.u_start(), out.surface.v_end() - out.surface.v_start());
+    double offset = 0;
+    for (const auto& loop : loops)
+      for (const auto& use : loop) offset = std::max(offset, use.offset);
+    for (auto& loop : out.loops) loop = close_loop(std::move(loop), point, domain_size, fit_tolerance + 2 * offset);
+  }
+  if (!face.same_sense) mirror_in_u(out);
+  orient_loops(out.loops);
+  validate(out, "face");
+  return out;
+}
+
+}  // namespace cadnurbs::step

@@ -1,0 +1,61 @@
+#pragma once
+// STEP's B-rep topology (ISO 10303-42: faces, bounds, loops, oriented edges, edges, vertices) read into
+// plain structures: each EDGE_CURVE once, numbered, with its trimmed 3D curve; each face with its surface
+// and its bounds as chains of edge uses.
+// Refuses (OutsideNativeSubset naming the entity): a vertex farther from its edge's curve than 1e-6 of the
+// curve's size (plus 1e-7 mm) — the vertices trim the curve, so they must lie on it; an edge whose vertices
+// run against its curve's sense; topology types outside the subset.
+#include <Eigen/Core>
+#include <unordered_map>
+#include <vector>
+
+#include "core/nurbs_curve.hpp"
+#include "formats/step/native/step_geometry.hpp"
+
+namespace cadnurbs::step {
+
+struct StepEdge {
+  EntityId entity = part21::none;
+  StepCurve curve;
+  Eigen::Vector3d start, end;  // the vertices' points
+  NurbsCurve path;             // the edge's 3D curve from start to end (clamped; exactly through both)
+};
+
+struct EdgeUse {
+  int edge = 0;         // index into the reader's edges (the scene-wide edge number)
+  bool forward = true;  // runs from the edge's start to its end
+};
+
+struct StepBound {
+  std::vector<EdgeUse> uses;  // in loop order, the bound's orientation applied
+  bool outer = false;         // FACE_OUTER_BOUND
+  EntityId entity = part21::none;
+};
+
+struct StepFace {
+  EntityId entity = part21::none;
+  EntityId surface_entity = part21::none;
+  StepSurface surface;
+  bool same_sense = true;  // false: the face's normal is against the surface's
+  std::vector<StepBound> bounds;  // VERTEX_LOOPs (a point) left out
+};
+
+class TopologyReader {
+ public:
+  explicit TopologyReader(const StepContext& context) : context_(context) {}
+
+  StepFace face(EntityId advanced_face);
+  // The faces of a CLOSED_SHELL, OPEN_SHELL or ORIENTED_CLOSED_SHELL, in the shell's order.
+  std::vector<EntityId> shell_faces(EntityId shell) const;
+
+  const std::vector<StepEdge>& edges() const { return edges_; }
+
+ private:
+  int edge(EntityId edge_curve);
+
+  const StepContext& context_;
+  std::vector<StepEdge> edges_;
+  std::unordered_map<EntityId, int> edge_index_;
+};
+
+}  // namespace cadnurbs::step
