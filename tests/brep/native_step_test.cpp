@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <map>
 
 #include "corpus_manifest.hpp"
@@ -15,7 +17,18 @@ namespace {
 
 // Corpus files the native reader hands to OpenCASCADE, and the start of the reason it gives.
 const std::map<std::string, std::string>& expected_refusals() {
-  static const std::map<std::string, std::string> table = {};
+  static const std::map<std::string, std::string> table = {
+      // OpenCASCADE makes a part whose shape holds curve sets besides its B-rep an assembly of its items,
+      // each component named after its XCAF label: not matched natively.
+      {"step/as1_pe_203.stp", "#769 GEOMETRIC_SET: an item besides the B-rep"},
+      {"step/io1-tu-203.stp", "#1203 GEOMETRIC_CURVE_SET: an item besides the B-rep"},
+      {"step/splinecage.stp", "#12 GEOMETRIC_CURVE_SET: an item besides the B-rep"},
+      // Geometry outside the subset (step_geometry).
+      {"step/dm1-id-214.stp", "#667 QUASI_UNIFORM_CURVE: a curve type the native reader does not read"},
+      // Faces whose trimming curves cannot be fitted (native_face).
+      {"step/goteborg.step", "#36 ADVANCED_FACE: trim curve does not follow its edge"},
+      {"step/screw.step", "#874 ADVANCED_FACE: trim curve does not follow its edge"},
+  };
   return table;
 }
 
@@ -39,6 +52,33 @@ TEST_P(NativeStepCorpus, SameAsOpenCascade) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, NativeStepCorpus, ::testing::ValuesIn(corpus_paths({"step/"})),
+                         [](const auto& info) { return corpus_test_name(info.param); });
+
+// Parts of the library (Debian's kicad-packages3d, fetched by scripts/fetch-part-library.sh) the corpus
+// lacks: the three made of several products placed by NEXT_ASSEMBLY_USAGE_OCCURRENCEs, and solids with
+// voids (BREP_WITH_VOIDS). Skipped when the library has not been fetched.
+std::string library_step(const std::string& relative) {
+  std::string cache;
+  if (const char* c = std::getenv("CADNURBS_CACHE")) cache = c;
+  else if (const char* x = std::getenv("XDG_CACHE_HOME")) cache = std::string(x) + "/cadnurbs";
+  else cache = std::string(std::getenv("HOME") ? std::getenv("HOME") : "") + "/.cache/cadnurbs";
+  return cache + "/kicad-packages3d-6.0.10-1/" + relative;
+}
+
+class NativeStepLibrary : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(NativeStepLibrary, SameAsOpenCascade) {
+  const std::string path = library_step(GetParam());
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not fetched (scripts/fetch-part-library.sh)";
+  expect_same_as_occt(read_step_native(path), path, std::filesystem::path(path).filename().string());
+}
+
+INSTANTIATE_TEST_SUITE_P(Library, NativeStepLibrary,
+                         ::testing::Values("Package_DFN_QFN.3dshapes/Texas_R-PUQFN-N12.step",
+                                           "Package_DFN_QFN.3dshapes/QFN-76-1EP_9x9mm_P0.4mm_EP5.81x6.31mm.step",
+                                           "Package_DIP.3dshapes/DIP-32_W7.62mm.step",
+                                           "Inductor_THT.3dshapes/L_CommonMode_Vertical_L22mm_W20mm_Px10.5mm_Py13.5mm_ProdTech_PDUUAT16.step",
+                                           "LED_THT.3dshapes/LED_D20.0mm.step"),
                          [](const auto& info) { return corpus_test_name(info.param); });
 
 }  // namespace

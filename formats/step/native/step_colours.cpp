@@ -22,7 +22,7 @@ class ColourReader {
 
   // The surface fill colour among a styled item's styles.
   std::optional<Colour> styled(EntityId item) const {
-    const part21::Value styles = m_.parameter(*record_of(item), 1);
+    const part21::Value styles = m_.parameter(*record_of(item), first_of(item));
     for (std::size_t k = 0; k < styles.size(); ++k) {
       const EntityId assignment = styles.item(k).reference();
       if (!c_.is(assignment, t_.presentation_style_assignment)) continue;
@@ -35,10 +35,15 @@ class ColourReader {
     return std::nullopt;
   }
 
+  // The record holding (styles, item): a simple STYLED_ITEM or OVER_RIDING_STYLED_ITEM's own record,
+  // after its name; in a complex instance (an annotation occurrence, say) STYLED_ITEM's partial record,
+  // which holds just (styles, item), the name being REPRESENTATION_ITEM's.
   const part21::Record* record_of(EntityId item) const {
+    if (m_.is_complex(item)) return m_.record(item, t_.styled_item);
     if (c_.is(item, t_.over_riding_styled_item)) return m_.record(item, t_.over_riding_styled_item);
     return m_.record(item, t_.styled_item);
   }
+  std::size_t first_of(EntityId item) const { return m_.is_complex(item) ? 0 : 1; }
 
  private:
   std::optional<Colour> usage(EntityId entity) const {
@@ -76,6 +81,14 @@ class ColourReader {
   const StepTypes& t_;
 };
 
+bool styleable(const StepContext& context, EntityId entity) {
+  const auto& t = context.types;
+  for (TypeId type : {t.advanced_face, t.manifold_solid_brep, t.brep_with_voids, t.closed_shell, t.open_shell,
+                      t.oriented_closed_shell, t.shell_based_surface_model})
+    if (context.is(entity, type)) return true;
+  return false;
+}
+
 }  // namespace
 
 std::unordered_map<EntityId, Colour> read_colours(const StepContext& context) {
@@ -87,8 +100,12 @@ std::unordered_map<EntityId, Colour> read_colours(const StepContext& context) {
     for (EntityId item : context.model.of_type(type)) {
       if (type == context.types.styled_item && context.is(item, context.types.over_riding_styled_item)) continue;
       reading(context, item, [&] {
-        const part21::Value target = context.model.parameter(*reader.record_of(item), 2);
-        if (target.kind() != part21::ValueKind::reference) return 0;
+        const part21::Record* record = reader.record_of(item);
+        if (!record) return 0;  // a complex instance without STYLED_ITEM's record: nothing the reader styles
+        const part21::Value target = context.model.parameter(*record, reader.first_of(item) + 1);
+        // Only faces, solids and shells are looked up; styles of anything else (annotations, curves,
+        // representations, mapped items) are never read.
+        if (target.kind() != part21::ValueKind::reference || !styleable(context, target.reference())) return 0;
         if (auto colour = reader.styled(item)) out[target.reference()] = *colour;
         return 0;
       });

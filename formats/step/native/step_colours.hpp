@@ -9,7 +9,8 @@
 
 namespace cadnurbs::step {
 
-// Takes the file. Returns the surface colour of every styled item (faces, solids, shells, ...), an
+// Takes the file. Returns the surface colour of every styled face, solid or shell (items of anything else,
+// such as annotation occurrences styled by complex STYLED_ITEM instances, are skipped), an
 // OVER_RIDING_STYLED_ITEM's colour over a plain one. Styles without a surface fill colour (curve styles,
 // invisibility) give none; a pre-defined colour outside ISO 10303-46's eight names gives none.
 std::unordered_map<EntityId, Colour> read_colours(const StepContext& context);
