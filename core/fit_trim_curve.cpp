@@ -24,6 +24,8 @@ struct Sample {
   Eigen::Vector3d point;     // edge(t(s))
   Eigen::Vector2d uv;        // its located (u,v)
   Eigen::Vector3d midpoint;  // the edge point halfway (in s) to the next sample; unused for the last
+  Eigen::Vector3d target;           // the surface point at uv: where the image must pass
+  Eigen::Vector3d midpoint_target;  // the surface point the midpoint is located at
   bool at_knot = false;      // at an end or a knot of the edge
 };
 
@@ -37,8 +39,9 @@ struct Check {
 class TrimFitter {
  public:
   TrimFitter(const NurbsCurve& edge, double t0, double t1, const LocateOnSurface& locate, const SurfaceAt& surface_at,
-             double tolerance)
-      : edge_(edge), t0_(t0), t1_(t1), locate_(locate), surface_at_(surface_at), tolerance_(tolerance) {}
+             double tolerance, double off_surface_limit)
+      : edge_(edge), t0_(t0), t1_(t1), locate_(locate), surface_at_(surface_at), tolerance_(tolerance),
+        off_surface_limit_(off_surface_limit) {}
 
   double t_of(double s) const { return s >= 1.0 ? t1_ : t0_ + s * (t1_ - t0_); }
   Eigen::Vector3d edge_at(double s) const { return curve_point(edge_, t_of(s)); }
@@ -46,17 +49,23 @@ class TrimFitter {
   // Refuses a (u,v) whose surface point is not within the tolerance of the edge point.
   void require_on_surface(const Eigen::Vector2d& uv, const Eigen::Vector3d& point, double s) const {
     const double d = uv.allFinite() ? (surface_at_(uv) - point).norm() : std::numeric_limits<double>::infinity();
-    if (d <= tolerance_) return;
+    if (d <= off_surface_limit_) return;
     throw GeometryError(kEntity, "the edge does not lie on the surface: " +
                                      (std::isfinite(d) ? message_number(d) + " from it" : std::string("no finite (u,v)")) +
                                      " at parameter " + message_number(t_of(s)) + " (tolerance " +
-                                     message_number(tolerance_) + ")");
+                                     message_number(off_surface_limit_) + ")");
   }
 
   Sample sample(double s, const Eigen::Vector3d& point, const Eigen::Vector2d& previous_uv) const {
     const Eigen::Vector2d uv = locate_(point, previous_uv);
     require_on_surface(uv, point, s);
-    return {s, point, uv, Eigen::Vector3d::Zero()};
+    return {s, point, uv, Eigen::Vector3d::Zero(), surface_at_(uv), Eigen::Vector3d::Zero()};
+  }
+
+  // The midpoint of sample k's interval (in s, to s_next), and the surface point it is located at.
+  void set_midpoint(Sample& sample, double s_next) const {
+    sample.midpoint = edge_at(0.5 * (sample.s + s_next));
+    sample.midpoint_target = surface_at_(locate_(sample.midpoint, sample.uv));
   }
 
   // The distances of curve c's image at every sample and every midpoint; with `first_failure` it
@@ -71,8 +80,8 @@ class TrimFitter {
       return d <= tolerance_;
     };
     for (size_t k = 0; k < samples.size(); ++k) {
-      if (!measure(samples[k].s, samples[k].point)) result.passed = false;
-      if (k + 1 < samples.size() && !measure(0.5 * (samples[k].s + samples[k + 1].s), samples[k].midpoint))
+      if (!measure(samples[k].s, samples[k].target)) result.passed = false;
+      if (k + 1 < samples.size() && !measure(0.5 * (samples[k].s + samples[k + 1].s), samples[k].midpoint_target))
         result.failed[k] = 1, result.passed = false;
       if (!result.passed && first_failure) break;
     }
@@ -97,8 +106,8 @@ class TrimFitter {
       if (!failed[k]) continue;
       const double s = 0.5 * (samples[k].s + samples[k + 1].s);
       Sample middle = sample(s, samples[k].midpoint, samples[k].uv);
-      out.back().midpoint = edge_at(0.5 * (samples[k].s + s));
-      middle.midpoint = edge_at(0.5 * (s + samples[k + 1].s));
+      set_midpoint(out.back(), s);
+      set_midpoint(middle, samples[k + 1].s);
       out.push_back(middle);
     }
     return out;
@@ -117,6 +126,7 @@ class TrimFitter {
   const LocateOnSurface& locate_;
   const SurfaceAt& surface_at_;
   double tolerance_;
+  double off_surface_limit_;
 };
 
 void check_input(const NurbsCurve& edge, double t0, double t1, const Eigen::Vector2d& start_uv, double tolerance) {
@@ -178,23 +188,24 @@ TrimCurveFit result(const NurbsCurve& curve, const Check& c, const std::vector<S
 }  // namespace
 
 TrimCurveFit fit_trim_curve(const NurbsCurve& edge, double t0, double t1, const Eigen::Vector2d& start_uv,
-                            const LocateOnSurface& locate, const SurfaceAt& surface_at, double tolerance) {
+                            const LocateOnSurface& locate, const SurfaceAt& surface_at, double tolerance,
+                            double off_surface_limit) {
   check_input(edge, t0, t1, start_uv, tolerance);
-  const TrimFitter fitter(edge, t0, t1, locate, surface_at, tolerance);
+  const TrimFitter fitter(edge, t0, t1, locate, surface_at, tolerance,
+                          off_surface_limit > 0 ? std::max(off_surface_limit, tolerance) : tolerance);
 
   std::vector<Sample> samples;
   for (const auto& [s, at_knot] : initial_parameters(edge, t0, t1)) {
     const Eigen::Vector3d point = fitter.edge_at(s);
     if (samples.empty()) {
       fitter.require_on_surface(start_uv, point, s);
-      samples.push_back({s, point, start_uv, Eigen::Vector3d::Zero()});
+      samples.push_back({s, point, start_uv, Eigen::Vector3d::Zero(), surface_at(start_uv), Eigen::Vector3d::Zero()});
     } else {
       samples.push_back(fitter.sample(s, point, samples.back().uv));
     }
     samples.back().at_knot = at_knot;
   }
-  for (size_t k = 0; k + 1 < samples.size(); ++k)
-    samples[k].midpoint = fitter.edge_at(0.5 * (samples[k].s + samples[k + 1].s));
+  for (size_t k = 0; k + 1 < samples.size(); ++k) fitter.set_midpoint(samples[k], samples[k + 1].s);
 
   // Cheap cases first: a straight image (2 points), a polyline edge's image as a polyline.
   if (collinear(samples)) {
@@ -244,10 +255,19 @@ TrimCurveFit fit_trim_curve(const NurbsCurve& edge, double t0, double t1, const 
     if (halved.back() != kept.back()) halved.push_back(kept.back());
     if (halved.size() == kept.size() || !try_subset(halved)) break;
   }
-  for (size_t pos = 1; pos + 1 < kept.size();) {
+  // Then runs of samples after each kept one, the run doubling while removals pass and halving when one
+  // fails (a fit and a check per try: galloping keeps the tries near one per kept sample, not per sample).
+  for (size_t pos = 1, run = 1; pos + 1 < kept.size();) {
+    const size_t count = std::min(run, kept.size() - 1 - pos);
     std::vector<int> fewer = kept;
-    fewer.erase(fewer.begin() + pos);
-    if (!try_subset(fewer)) ++pos;
+    fewer.erase(fewer.begin() + static_cast<long>(pos), fewer.begin() + static_cast<long>(pos + count));
+    if (try_subset(fewer)) {
+      run *= 2;
+    } else if (run > 1) {
+      run /= 2;
+    } else {
+      ++pos;
+    }
   }
   return result(curve, fitter.check(curve, samples, false), samples);
 }

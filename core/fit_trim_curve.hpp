@@ -30,10 +30,10 @@ constexpr int kMaxTrimCurveSamples = 4096;
 // s <-> t(s) = t0 + s (t1 - t0). c(0) is exactly `start_uv` (the caller's: it places the seam), c(1)
 // exactly the located (u,v) of edge(t1).
 //
-// Checked, not bound: |surface_at(c(s)) - edge(t(s))| <= tolerance (3D) at every checked point: the
-// samples (per knot span of the edge max(2, degree + 1) intervals to start with, at least 4 in all, one
-// a span past 256; more added by bisection where a check fails) and the midpoints between consecutive samples. Between them
-// the image is not checked.
+// Checked, not bound: |surface_at(c(s)) - surface_at(locate(edge(t(s))))| <= tolerance (3D) at every
+// checked point: the samples (per knot span of the edge max(2, degree + 1) intervals to start with, at
+// least 4 in all, one a span past 256; more added by bisection where a check fails) and the midpoints
+// between consecutive samples. Between them the image is not checked.
 //
 // The curve: degree 1 with 2 points when all located samples lie on a line to 1e-10 of their extent
 // and the chord passes the checks; for a degree-1 edge, the polyline through the samples at its knots if
@@ -42,13 +42,19 @@ constexpr int kMaxTrimCurveSamples = 4096;
 // still passes every check, then single samples greedily (few control points: these curves are stored;
 // the greedy pass costs a fit and a check per sample, O(n^2)).
 //
+// The image is measured against the edge's located points S(locate(edge(t))), its projection onto the
+// surface, not the edge itself: files keep edges within a tolerance of their faces (linkrods.step's by up
+// to 1e-4 mm), and a fit measured against the edge would use that slack to wander off the projection.
+//
 // Refuses (GeometryError): non-finite or out-of-domain input, tolerance <= 0, t0 == t1, an edge that is
-// not a valid 3D curve; `start_uv` or a located point farther than `tolerance` from its edge point ("the
+// not a valid 3D curve; `start_uv` or a located point farther than `off_surface_limit` (at least
+// `tolerance`; 0: `tolerance`) from its edge point ("the
 // edge does not lie on the surface: D from it at parameter t"); a fit still outside the tolerance when
 // kMaxTrimCurveSamples samples are reached, or where a failing interval is shorter than 2^-40 in s (the
 // image jumps: a seam placed wrongly) ("trim curve does not follow its edge within T after N
 // samples: D at parameter t").
 TrimCurveFit fit_trim_curve(const NurbsCurve& edge, double t0, double t1, const Eigen::Vector2d& start_uv,
-                            const LocateOnSurface& locate, const SurfaceAt& surface_at, double tolerance);
+                            const LocateOnSurface& locate, const SurfaceAt& surface_at, double tolerance,
+                            double off_surface_limit = 0);
 
 }  // namespace cadnurbs

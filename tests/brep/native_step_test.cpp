@@ -27,7 +27,6 @@ const std::map<std::string, std::string>& expected_refusals() {
       {"step/dm1-id-214.stp", "#667 QUASI_UNIFORM_CURVE: a curve type the native reader does not read"},
       // Faces whose trimming curves cannot be fitted (native_face).
       {"step/goteborg.step", "#36 ADVANCED_FACE: trim curve does not follow its edge"},
-      {"step/screw.step", "#874 ADVANCED_FACE: trim curve does not follow its edge"},
   };
   return table;
 }

@@ -300,8 +300,10 @@ TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& ed
     if (analytic) {
       for (int d = 0; d < 2; ++d) {
         if (!chart.angular(d)) continue;
+        // A full turn measured from samples may exceed 2 pi by the round-off of the located angles.
+        if (hi[d] - lo[d] > kTurn + 1e-6) refuse("its loops span more than one turn (" + message_number(hi[d] - lo[d]) + " rad)");
+        hi[d] = std::min(hi[d], lo[d] + kTurn);
         const double extent = hi[d] - lo[d];
-        if (extent > kTurn + 1e-9) refuse("its loops span more than one turn (" + message_number(extent) + " rad)");
         double pad = std::min(1e-3 * extent, 0.5 * std::max(0.0, kTurn - extent));
         double a = lo[d] - pad, b = hi[d] + pad;
         if (sphere && d == 1) a = std::max(a, -0.5 * std::numbers::pi), b = std::min(b, 0.5 * std::numbers::pi);
@@ -334,8 +336,11 @@ TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& ed
           const NurbsCurve& path = edges[static_cast<std::size_t>(use.use.edge)].path;
           const double t0 = use.use.forward ? path.domain_start() : path.domain_end();
           const double t1 = use.use.forward ? path.domain_end() : path.domain_start();
-          // The edge may lie off the surface by the file's precision: the fit can follow it no closer.
-          curve = fit_trim_curve(path, t0, t1, a, locate, point, fit_tolerance + 2 * use.offset).curve;
+          // The edge may lie off the surface by the file's precision: the fit follows its projection.
+          // Where the file's edge is off its surface by more, a hundredth of that is the precision that
+          // means anything (KiCad's QFP parts: 6e-4 mm off faces 0.1 mm across).
+          const double tolerance = std::max(fit_tolerance, 0.01 * use.offset);
+          curve = fit_trim_curve(path, t0, t1, a, locate, point, tolerance, 2 * use.offset + tolerance).curve;
         }
         for (const auto& p : curve.points) uv_box.extend(Eigen::Vector2d(p.x(), p.y()));
         trim.segments.emplace_back(std::move(curve));

@@ -9,7 +9,9 @@
 //   analytic surfaces, Newton on B-splines), continuing from the previous sample so that angles unwrap
 //   across seams; an edge whose samples keep one parameter (a ruling, a parallel, a meridian, a B-spline's
 //   iso-curve) becomes the exact straight segment between its ends, any other is fitted
-//   (core/fit_trim_curve) within `fit_tolerance` of its 3D curve, checked at samples;
+//   (core/fit_trim_curve) within `fit_tolerance` of the edge's projection onto the surface, checked at
+//   samples (within a hundredth of the edge's distance from the surface where that is larger: files keep
+//   edges within a tolerance of their faces, not on them);
 // - a use that starts or ends at a pole (sphere, cone apex) takes the angle of its next sample; the gap
 //   this leaves between uses is bridged by a straight segment at the pole (one point in 3D).
 // An analytic surface becomes its exact NURBS over the face's box (core/analytic_surface): angles as far as
