@@ -24,6 +24,8 @@ template <class... F>
 struct Overloaded : F... {
   using F::operator()...;
 };
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;  // clang 14 (the fuzz build) deduces aggregates only with a guide
 
 // An angle (any branch) within pi of near's, else in (-pi, pi].
 double placed_angle(double angle, std::optional<double> near) {
