@@ -261,7 +261,11 @@ SceneNode product_node(SceneBuilder& builder, const StepProductTree& tree, std::
 }  // namespace
 
 BrepTranslation read_step_native(const std::string& path) {
-  const part21::Model model = part21::read_part21_file(path);
+  return read_step_native(read_file(path), path);
+}
+
+BrepTranslation read_step_native(std::string_view bytes, const std::string& path) {
+  const part21::Model model = part21::parse_part21(bytes, path);
   const StepTypes types(model);
   StepContext context{model, types};
   StepProductTree tree = read_product_tree(context);

@@ -8,6 +8,7 @@
 // circles, ellipses and B-spline curves; colours from the presentation; SI and conversion-based units, per
 // representation. Trimming curves are computed (native_face).
 #include <string>
+#include <string_view>
 
 #include "formats/brep/brep_translation.hpp"
 #include "formats/step/native/step_context.hpp"
@@ -25,5 +26,8 @@ namespace cadnurbs {
 // step::OutsideNativeSubset ("#N TYPE: reason") for anything outside the subset or a face it cannot
 // convert: the caller hands the file to OpenCASCADE.
 BrepTranslation read_step_native(const std::string& path);
+
+// The same for the file's bytes, already read (`path` names the file in messages and gives the stem).
+BrepTranslation read_step_native(std::string_view bytes, const std::string& path);
 
 }  // namespace cadnurbs
