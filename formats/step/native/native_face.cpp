@@ -301,7 +301,9 @@ TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& ed
       for (int d = 0; d < 2; ++d) {
         if (!chart.angular(d)) continue;
         // A full turn measured from samples may exceed 2 pi by the round-off of the located angles.
-        if (hi[d] - lo[d] > kTurn + 1e-6) refuse("its loops span more than one turn (" + message_number(hi[d] - lo[d]) + " rad)");
+        if (hi[d] - lo[d] > kTurn + 1e-6)
+          refuse(std::string("its loops span more than one turn in ") + (d == 0 ? "u" : "v") + " (" +
+                 message_number(lo[d]) + " to " + message_number(hi[d]) + " rad)");
         hi[d] = std::min(hi[d], lo[d] + kTurn);
         const double extent = hi[d] - lo[d];
         double pad = std::min(1e-3 * extent, 0.5 * std::max(0.0, kTurn - extent));
