@@ -223,7 +223,9 @@ TrimLoop close_loop(TrimLoop loop, const std::function<Eigen::Vector3d(const Eig
     const double gap = (end - start).norm();
     if (gap == 0.0) continue;
     const double distance = (point(end) - point(start)).norm();
-    if (gap <= 1e-7 * domain_size && distance <= tolerance) {
+    // Ends a little apart in (u, v) and one point in 3D: moved together (an angle clamped to a full turn,
+    // an edge a little off its face).
+    if (gap <= 1e-4 * domain_size && distance <= tolerance) {
       join_segments(loop.segments[i], loop.segments[next]);
       continue;
     }
@@ -300,8 +302,9 @@ TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& ed
     if (analytic) {
       for (int d = 0; d < 2; ++d) {
         if (!chart.angular(d)) continue;
-        // A full turn measured from samples may exceed 2 pi by the round-off of the located angles.
-        if (hi[d] - lo[d] > kTurn + 1e-6)
+        // A full turn measured from samples may exceed 2 pi by the round-off of the located angles, or by an
+        // edge's offset from its face (a torus's seam 3e-6 mm off it in KiCad's axial inductors: 1e-5 rad).
+        if (hi[d] - lo[d] > kTurn + 1e-4)
           refuse(std::string("its loops span more than one turn in ") + (d == 0 ? "u" : "v") + " (" +
                  message_number(lo[d]) + " to " + message_number(hi[d]) + " rad)");
         hi[d] = std::min(hi[d], lo[d] + kTurn);
@@ -342,7 +345,10 @@ TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& ed
           // Where the file's edge is off its surface by more, a hundredth of that is the precision that
           // means anything (KiCad's QFP parts: 6e-4 mm off faces 0.1 mm across).
           const double tolerance = std::max(fit_tolerance, 0.01 * use.offset);
-          curve = fit_trim_curve(path, t0, t1, a, locate, point, tolerance, 2 * use.offset + tolerance).curve;
+          // The offset varies along the edge; between our samples it may be larger (a torus seam 3e-6 mm
+          // off its face): the fit refuses only points farther off than any edge a file keeps.
+          const double off_surface = 4 * use.offset + 1e-4 * size + tolerance;
+          curve = fit_trim_curve(path, t0, t1, a, locate, point, tolerance, off_surface).curve;
         }
         for (const auto& p : curve.points) uv_box.extend(Eigen::Vector2d(p.x(), p.y()));
         trim.segments.emplace_back(std::move(curve));
@@ -365,7 +371,8 @@ TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& ed
     double offset = 0;
     for (const auto& loop : loops)
       for (const auto& use : loop) offset = std::max(offset, use.offset);
-    for (auto& loop : out.loops) loop = close_loop(std::move(loop), point, domain_size, fit_tolerance + 2 * offset);
+    for (auto& loop : out.loops)
+      loop = close_loop(std::move(loop), point, domain_size, fit_tolerance + 4 * offset + 1e-6 * size);
   }
   if (!face.same_sense) mirror_in_u(out);
   orient_loops(out.loops);
