@@ -95,13 +95,19 @@ int main(int argc, char** argv) {
     }
     native_total += native_best;
     occt_total += occt_best;
-    std::printf("%-70s native %8.4f s  OCCT %8.4f s  %6.1fx%s\n", file.c_str(), native_best, occt_best,
-                occt_best / native_best, refusal.empty() ? "" : "  (refused)");
+    if (occt)
+      std::printf("%-70s native %8.4f s  OCCT %8.4f s  %6.1fx%s\n", file.c_str(), native_best, occt_best,
+                  occt_best / native_best, refusal.empty() ? "" : "  (refused)");
+    else
+      std::printf("%-70s native %8.4f s%s\n", file.c_str(), native_best, refusal.empty() ? "" : "  (refused)");
   }
   std::printf("\n%zu files: %d read natively, %d handed to OCCT (%.1f %%), %d OCCT failures\n", files.size(), read,
               refused, 100.0 * refused / std::max<std::size_t>(1, files.size()), failed);
-  std::printf("native total %.2f s (of which read natively %.2f s), OCCT total %.2f s: OCCT / native %.1fx\n",
-              native_total, native_read_total, occt_total, occt_total / native_total);
+  if (occt)
+    std::printf("native total %.2f s (of which read natively %.2f s), OCCT total %.2f s: OCCT / native %.1fx\n",
+                native_total, native_read_total, occt_total, occt_total / native_total);
+  else
+    std::printf("native total %.2f s (of which read natively %.2f s)\n", native_total, native_read_total);
   for (const auto& [reason, count] : reasons) std::printf("%5d  %s\n", count, reason.c_str());
   return 0;
 }

@@ -51,7 +51,7 @@ struct UseSamples {
 // The face's surface before its NURBS exists: natural parameters, how to locate points, which are angles.
 class Chart {
  public:
-  explicit Chart(const StepSurface& surface) : surface_(surface) {
+  explicit Chart(const StepSurface& surface) {
     if (const auto* analytic = std::get_if<AnalyticSurface>(&surface)) {
       analytic_ = analytic;
       angular_ = angular_directions(*analytic);
@@ -64,7 +64,6 @@ class Chart {
     }
   }
 
-  bool plane() const { return analytic_ && std::holds_alternative<PlaneSurface>(*analytic_); }
   bool angular(int d) const { return angular_[d]; }
   const NurbsSurface* nurbs() const { return nurbs_; }
 
@@ -98,7 +97,6 @@ class Chart {
   }
 
  private:
-  const StepSurface& surface_;
   const AnalyticSurface* analytic_ = nullptr;
   const NurbsSurface* nurbs_ = nullptr;
   std::array<bool, 2> angular_{false, false};
