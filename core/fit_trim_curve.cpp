@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ namespace {
 const char* const kEntity = "trim curve fit";
 // Intervals (in s) shorter than this are not bisected: 2^-40, far below any edge's features.
 constexpr double kShortestInterval = 0x1p-40;
+// A curve whose control points are moved into the domain may leave the edge by this many tolerances
+// (KiCad's QFP fillets: 2.5, where the edge itself lies 100 tolerances off the surface).
+constexpr double kDomainClampSlack = 4.0;
 
 struct Sample {
   double s;                  // the trim curve's parameter, in [0, 1]
@@ -39,9 +43,9 @@ struct Check {
 class TrimFitter {
  public:
   TrimFitter(const NurbsCurve& edge, double t0, double t1, const LocateOnSurface& locate, const SurfaceAt& surface_at,
-             double tolerance, double off_surface_limit)
+             double tolerance, double off_surface_limit, const std::optional<Eigen::AlignedBox2d>& domain)
       : edge_(edge), t0_(t0), t1_(t1), locate_(locate), surface_at_(surface_at), tolerance_(tolerance),
-        off_surface_limit_(off_surface_limit) {}
+        off_surface_limit_(off_surface_limit), domain_(domain) {}
 
   double t_of(double s) const { return s >= 1.0 ? t1_ : t0_ + s * (t1_ - t0_); }
   Eigen::Vector3d edge_at(double s) const { return curve_point(edge_, t_of(s)); }
@@ -98,6 +102,15 @@ class TrimFitter {
     return interpolate_curve(points, parameters, degree, 2);
   }
 
+  // c with its control points moved into the domain, if one is given and the result stays within
+  // kDomainClampSlack tolerances at every check; c otherwise.
+  NurbsCurve within_domain(const NurbsCurve& c, const std::vector<Sample>& samples) const {
+    if (!domain_) return c;
+    NurbsCurve clamped = c;
+    for (auto& p : clamped.points) p.head<2>() = p.head<2>().cwiseMax(domain_->min()).cwiseMin(domain_->max());
+    return check(clamped, samples, false).max_distance <= kDomainClampSlack * tolerance_ ? clamped : c;
+  }
+
   // The samples with a new one at the midpoint of every failed interval.
   std::vector<Sample> bisected(const std::vector<Sample>& samples, const std::vector<char>& failed) const {
     std::vector<Sample> out;
@@ -127,6 +140,7 @@ class TrimFitter {
   const SurfaceAt& surface_at_;
   double tolerance_;
   double off_surface_limit_;
+  std::optional<Eigen::AlignedBox2d> domain_;
 };
 
 void check_input(const NurbsCurve& edge, double t0, double t1, const Eigen::Vector2d& start_uv, double tolerance) {
@@ -189,10 +203,10 @@ TrimCurveFit result(const NurbsCurve& curve, const Check& c, const std::vector<S
 
 TrimCurveFit fit_trim_curve(const NurbsCurve& edge, double t0, double t1, const Eigen::Vector2d& start_uv,
                             const LocateOnSurface& locate, const SurfaceAt& surface_at, double tolerance,
-                            double off_surface_limit) {
+                            double off_surface_limit, const std::optional<Eigen::AlignedBox2d>& domain) {
   check_input(edge, t0, t1, start_uv, tolerance);
   const TrimFitter fitter(edge, t0, t1, locate, surface_at, tolerance,
-                          off_surface_limit > 0 ? std::max(off_surface_limit, tolerance) : tolerance);
+                          off_surface_limit > 0 ? std::max(off_surface_limit, tolerance) : tolerance, domain);
 
   std::vector<Sample> samples;
   for (const auto& [s, at_knot] : initial_parameters(edge, t0, t1)) {
@@ -269,6 +283,8 @@ TrimCurveFit fit_trim_curve(const NurbsCurve& edge, double t0, double t1, const 
       ++pos;
     }
   }
+  // (A line or polyline between located points stays in the domain; an interpolant may overshoot it.)
+  curve = fitter.within_domain(curve, samples);
   return result(curve, fitter.check(curve, samples, false), samples);
 }
 

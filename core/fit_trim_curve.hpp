@@ -3,6 +3,8 @@
 // file gives none (STEP files without pcurves): the edge sampled, each sample located on the surface,
 // the (u,v) samples interpolated (Piegl & Tiller 9.2.1), refined until the image follows the edge.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <optional>
 #include <functional>
 
 #include "core/nurbs_curve.hpp"
@@ -53,8 +55,15 @@ constexpr int kMaxTrimCurveSamples = 4096;
 // kMaxTrimCurveSamples samples are reached, or where a failing interval is shorter than 2^-40 in s (the
 // image jumps: a seam placed wrongly) ("trim curve does not follow its edge within T after N
 // samples: D at parameter t").
+//
+// `domain`, when given: the surface's parameter domain, which every located point lies in; the curve's
+// control points are moved into it (the curve lies in their hull, so it stays on the surface) if the
+// curve's image then stays within 4 x tolerance at every checked point (the result's max_distance says
+// how far). An interpolant near the domain's edge overshoots it by a little (KiCad's QFP fillets: by
+// 6e-5 of the domain, across a boundary edge the loop then crosses); clamped, it touches that edge.
 TrimCurveFit fit_trim_curve(const NurbsCurve& edge, double t0, double t1, const Eigen::Vector2d& start_uv,
                             const LocateOnSurface& locate, const SurfaceAt& surface_at, double tolerance,
-                            double off_surface_limit = 0);
+                            double off_surface_limit = 0,
+                            const std::optional<Eigen::AlignedBox2d>& domain = std::nullopt);
 
 }  // namespace cadnurbs

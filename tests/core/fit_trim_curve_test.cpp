@@ -254,3 +254,41 @@ TEST(InterpolateCurve, PassesThroughItsPointsAndReproducesCubics) {
   EXPECT_THROW(interpolate_curve(points, std::vector<double>(points.size(), 0.0), 3, 2), GeometryError);
   EXPECT_EQ(interpolate_curve({points[0], points[1]}, {0.0, 1.0}, 3, 2).degree(), 1);
 }
+
+// An edge that starts beyond a B-spline's domain (a file's edge off its face, as in KiCad's QFP fillets):
+// its first samples are located on the domain's edge u = 0, the rest inside, and the interpolant of that
+// kink overshoots to u < 0, across the face's boundary there. Given the domain, the curve stays in it.
+TEST(FitTrimCurve, StaysInTheDomainItIsGiven) {
+  NurbsSurface flat;  // (u, v) -> (u, v, 0) on [0, 1]^2
+  flat.u_order = flat.v_order = 2;
+  flat.u_count = flat.v_count = 2;
+  flat.u_knots = flat.v_knots = {0, 0, 1, 1};
+  flat.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  std::vector<Eigen::Vector3d> points;
+  std::vector<double> t;
+  for (int k = 0; k <= 40; ++k) {
+    const double s = k / 40.0;
+    points.emplace_back(-0.002 + 0.5 * s * s, 0.2 + 0.5 * s, 0.0);
+    t.push_back(s);
+  }
+  const NurbsCurve edge = interpolate_curve(points, t, 3, 3);
+  const LocateOnSurface locate = [&](const Eigen::Vector3d& p, const Eigen::Vector2d& previous) {
+    return nearest_surface_parameter(flat, p, previous);
+  };
+  const SurfaceAt at = [&](const Eigen::Vector2d& uv) { return surface_point(flat, uv.x(), uv.y()); };
+  const Eigen::Vector2d start = locate(curve_point(edge, 0.0), {0.0, 0.2});
+  ASSERT_EQ(start.x(), 0.0);
+  const double tolerance = 1e-6, off_surface = 0.01;
+  const auto least_u = [](const NurbsCurve& c) {
+    double u = 1.0;
+    for (const auto& p : c.points) u = std::min(u, p.x());
+    return u;
+  };
+  const TrimCurveFit free = fit_trim_curve(edge, 0.0, 1.0, start, locate, at, tolerance, off_surface);
+  EXPECT_LT(least_u(free.curve), -1e-9) << "the unclamped interpolant should leave the domain here";
+  const TrimCurveFit kept = fit_trim_curve(edge, 0.0, 1.0, start, locate, at, tolerance, off_surface,
+                                           Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)));
+  EXPECT_GE(least_u(kept.curve), 0.0);
+  EXPECT_LE(kept.max_distance, 4 * tolerance);
+  EXPECT_EQ(kept.curve.points.front().head<2>(), start);
+}

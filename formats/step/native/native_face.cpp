@@ -346,7 +346,12 @@ TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& ed
           // The offset varies along the edge; between our samples it may be larger (a torus seam 3e-6 mm
           // off its face): the fit refuses only points farther off than any edge a file keeps.
           const double off_surface = 4 * use.offset + 1e-4 * size + tolerance;
-          curve = fit_trim_curve(path, t0, t1, a, locate, point, tolerance, off_surface).curve;
+          // On a B-spline the located points lie in its domain; so must the curve (see fit_trim_curve).
+          std::optional<Eigen::AlignedBox2d> domain;
+          if (const NurbsSurface* nurbs = chart.nurbs())
+            domain = Eigen::AlignedBox2d(Eigen::Vector2d(nurbs->u_start(), nurbs->v_start()),
+                                         Eigen::Vector2d(nurbs->u_end(), nurbs->v_end()));
+          curve = fit_trim_curve(path, t0, t1, a, locate, point, tolerance, off_surface, domain).curve;
         }
         for (const auto& p : curve.points) uv_box.extend(Eigen::Vector2d(p.x(), p.y()));
         trim.segments.emplace_back(std::move(curve));
