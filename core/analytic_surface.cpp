@@ -179,6 +179,26 @@ Meridian meridian(const NurbsCurve& profile, const Eigen::Vector3d& axis_point, 
   return m;
 }
 
+// The unit direction across the axis of the plane through the axis that holds every control point of the
+// profile (within 1e-9 of its size), if there is one (then the profile lies in it).
+std::optional<Eigen::Vector3d> plane_across(const NurbsCurve& profile, const Eigen::Vector3d& axis_point,
+                                            const Eigen::Vector3d& d) {
+  Eigen::Vector3d widest = Eigen::Vector3d::Zero();
+  double size = 0;
+  for (const auto& point : profile.points) {
+    const Eigen::Vector3d w = across(point - axis_point, d);
+    if (w.norm() > widest.norm()) widest = w;
+    size = std::max(size, (point - axis_point).norm());
+  }
+  if (!(widest.norm() > 1e-9 * size)) return std::nullopt;
+  const Eigen::Vector3d e = widest.normalized();
+  for (const auto& point : profile.points) {
+    const Eigen::Vector3d w = across(point - axis_point, d);
+    if ((w - w.dot(e) * e).norm() > 1e-9 * size) return std::nullopt;
+  }
+  return e;
+}
+
 Eigen::Vector3d unit_direction(const Eigen::Vector3d& d, const std::string& entity) {
   const double length = d.norm();
   if (!std::isfinite(length) || length == 0) throw GeometryError(entity, "its direction is zero or not finite");
@@ -192,12 +212,33 @@ Eigen::Vector2d revolution_inverse(const RevolutionSurface& s, const Eigen::Vect
   const double z = q.dot(d);
   const Eigen::Vector3d w = across(q, d);
   const double rho = w.norm();
-  const double t = profile_minimum(s.profile, component(near, 1), [&](const NurbsCurve& piece, double t) {
-    const Meridian m = meridian(piece, s.axis_point, d, t);
-    const double dr = m.rho - rho, dz = m.z - z;
-    return Terms{(dr * dr + dz * dz) / 2, dr * m.rho1 + dz * m.z1,
-                 m.rho1 * m.rho1 + dr * m.rho2 + m.z1 * m.z1 + dz * m.z2};
-  });
+  double t;
+  if (const std::optional<Eigen::Vector3d> e = plane_across(s.profile, s.axis_point, d)) {
+    // The profile lies in a plane through the axis: distances in that plane with a signed radius are
+    // smooth where the profile crosses the axis; |radius| folds the profile there, and a false minimum
+    // beside the true one misled the sampled search (KiCad's axial inductors: a 213 mm arc through the
+    // axis, 0.4 mm off). p's image on either side of the axis, the nearer kept.
+    auto nearest = [&](double target) {
+      const double found = profile_minimum(s.profile, component(near, 1), [&](const NurbsCurve& piece, double t) {
+        const std::vector<Eigen::Vector3d> c = curve_derivatives(piece, t, 2);
+        const double dr = (c[0] - s.axis_point).dot(*e) - target, dz = (c[0] - s.axis_point).dot(d) - z;
+        const double r1 = c[1].dot(*e), z1 = c[1].dot(d);
+        return Terms{(dr * dr + dz * dz) / 2, dr * r1 + dz * z1, r1 * r1 + dr * c[2].dot(*e) + z1 * z1 + dz * c[2].dot(d)};
+      });
+      const Eigen::Vector3d c = curve_point(s.profile, found) - s.axis_point;
+      return std::pair{found, std::hypot(c.dot(*e) - target, c.dot(d) - z)};
+    };
+    const auto [plus, plus_distance] = nearest(rho);
+    const auto [minus, minus_distance] = nearest(-rho);
+    t = minus_distance < plus_distance ? minus : plus;
+  } else {
+    t = profile_minimum(s.profile, component(near, 1), [&](const NurbsCurve& piece, double t) {
+      const Meridian m = meridian(piece, s.axis_point, d, t);
+      const double dr = m.rho - rho, dz = m.z - z;
+      return Terms{(dr * dr + dz * dz) / 2, dr * m.rho1 + dz * m.z1,
+                   m.rho1 * m.rho1 + dr * m.rho2 + m.z1 * m.z1 + dz * m.z2};
+    });
+  }
   const Meridian m = meridian(s.profile, s.axis_point, d, t);
   const double size = std::max({rho, std::abs(z), m.rho, std::abs(m.z)});
   if (rho <= kOnAxis * size || m.rho <= kOnAxis * size) return {undefined_angle(component(near, 0)), t};

@@ -25,7 +25,7 @@ struct Comparison {
 };
 
 void compare_nodes(const SceneNode& ours, const SceneNode& theirs, const Colour& our_inherited,
-                   const Colour& their_inherited, const std::string& path, Comparison& out) {
+                   const Colour& their_inherited, const std::string& path, double area_tolerance, Comparison& out) {
   EXPECT_EQ(ours.name, theirs.name) << path;
   EXPECT_EQ(ours.source_entity, theirs.source_entity) << path;
   EXPECT_TRUE(ours.transform.isApprox(theirs.transform, 1e-9)) << path;
@@ -49,11 +49,11 @@ void compare_nodes(const SceneNode& ours, const SceneNode& theirs, const Colour&
     const double relative = std::abs(area_a - area_b) / std::max(area_b, 1e-300);
     ++out.faces;
     if (relative > out.worst_area) out.worst_area = relative, out.worst_face = where;
-    EXPECT_LE(relative, 1e-6) << where << ": area " << area_a << " vs OCCT's " << area_b;
+    EXPECT_LE(relative, area_tolerance) << where << ": area " << area_a << " vs OCCT's " << area_b;
   }
   for (std::size_t i = 0; i < ours.children.size(); ++i)
     compare_nodes(ours.children[i], theirs.children[i], our_colour, their_colour, path + "/" + theirs.children[i].source_entity,
-                  out);
+                  area_tolerance, out);
 }
 
 long open_edges(const SceneNode& exact, const SceneNode& meshed, const std::vector<bool>& degenerated) {
@@ -71,12 +71,13 @@ long open_edges(const SceneNode& exact, const SceneNode& meshed, const std::vect
 
 }  // namespace
 
-void expect_same_as_occt(const BrepTranslation& native, const std::string& path, const std::string& relative) {
+void expect_same_as_occt(const BrepTranslation& native, const std::string& path, const std::string& relative,
+                         double area_tolerance) {
   const BrepTranslation occt = read_step(path);
   EXPECT_EQ(native.face_count, occt.face_count);
   EXPECT_NEAR(native.scene.source_unit.millimetres, occt.scene.source_unit.millimetres, 1e-12);
   Comparison comparison;
-  compare_nodes(native.scene.root, occt.scene.root, Colour{}, Colour{}, native.scene.root.name, comparison);
+  compare_nodes(native.scene.root, occt.scene.root, Colour{}, Colour{}, native.scene.root.name, area_tolerance, comparison);
 
   const double d = 0.01 * scene_bounding_box(occt.scene).diagonal().norm();
   TessellationReport report;

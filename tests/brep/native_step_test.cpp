@@ -9,6 +9,7 @@
 #include <map>
 
 #include "corpus_manifest.hpp"
+#include "analysis/measure/trimmed_surface_area.hpp"
 #include "formats/step/native/read_step_native.hpp"
 #include "native_comparison.hpp"
 
@@ -77,8 +78,28 @@ INSTANTIATE_TEST_SUITE_P(Library, NativeStepLibrary,
                                            "Package_DFN_QFN.3dshapes/QFN-76-1EP_9x9mm_P0.4mm_EP5.81x6.31mm.step",
                                            "Package_DIP.3dshapes/DIP-32_W7.62mm.step",
                                            "Inductor_THT.3dshapes/L_CommonMode_Vertical_L22mm_W20mm_Px10.5mm_Py13.5mm_ProdTech_PDUUAT16.step",
-                                           "LED_THT.3dshapes/LED_D20.0mm.step"),
+                                           "LED_THT.3dshapes/LED_D20.0mm.step",
+                                           // lead wires: extruded whole circles, bounded by a seam edge
+                                           "Inductor_THT.3dshapes/L_Axial_L20.0mm_D8.0mm_P5.08mm_Vertical.step",
+                                           // end caps revolved from a 213 mm arc through the axis
+                                           "Inductor_THT.3dshapes/L_Axial_L6.6mm_D2.7mm_P10.16mm_Horizontal_Vishay_IM-2.step"),
                          [](const auto& info) { return corpus_test_name(info.param); });
+
+// KiCad's QFP parts keep edges up to 6e-4 mm off faces 0.1 mm across. OpenCASCADE's pcurves there are
+// approximations: its areas differ from ours by up to 4.6e-3, and where the exact area is known it is
+// OCCT that is off (face 73, a 0.35 x 0.075 mm rectangle bounded by four LINEs: ours to 1e-13, OCCT's
+// 2.1e-5 too large). Everything else is compared as on the other parts.
+TEST(NativeStepLibraryQfp, ExactWhereOpenCascadeApproximates) {
+  const std::string path = library_step("Package_QFP.3dshapes/LQFP-36_7x7mm_P0.65mm.step");
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not fetched (scripts/fetch-part-library.sh)";
+  const BrepTranslation native = read_step_native(path);
+  const SceneNode* part = &native.scene.root;
+  while (part->shapes.empty() && !part->children.empty()) part = &part->children.front();
+  ASSERT_GT(part->shapes.size(), 73u);
+  const auto& rectangle = std::get<TrimmedSurface>(part->shapes[72].geometry);
+  EXPECT_NEAR(trimmed_surface_area(rectangle, 1e-10), 0.35 * 0.075, 1e-13 * 0.35 * 0.075);
+  expect_same_as_occt(native, path, "LQFP-36_7x7mm_P0.65mm.step", 5e-3);
+}
 
 }  // namespace
 }  // namespace cadnurbs::test

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "analysis/eval/span_quadrature.hpp"
+#include "core/conic_curves.hpp"
 #include "core/geometry_error.hpp"
 #include "core/knot_vector.hpp"
 
@@ -255,6 +256,30 @@ TEST(AnalyticSurface, Refusals) {
   // Allowed: a spindle torus, a sphere's b a hair past the pole (clamped), a full turn plus rounding.
   EXPECT_EQ(message(TorusSurface{f, 1, 2}, {0, 1, 0, 1}), "no refusal");
   EXPECT_EQ(message(SphereSurface{f, 1}, {0, 2 * kPi + 1e-10, -kPi / 2 - 1e-10, kPi / 2}), "no refusal");
+}
+
+// A profile through the axis (KiCad's axial inductors: an end cap revolved from a 213 mm arc): points of
+// the cap near the axis are found on their own sheet, not on the profile's mirror image across the axis
+// 0.4 mm away.
+TEST(AnalyticSurface, ProfileThroughTheAxisFindsTheRightSheet) {
+  const AxisFrame profile_frame = axis_frame({214.00961664559, 0, -19.23194261324}, Eigen::Vector3d(0, -1, 0),
+                                             Eigen::Vector3d(1, 0, 0), "profile");
+  const RevolutionSurface cap{circle_arc(profile_frame, 213.27166950571, -kPi, kPi), {1.78, 0, 1.45}, {1, 0, 0}};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> angle(-kPi, kPi);
+  int tried = 0;
+  const double start = cap.profile.domain_start(), end = cap.profile.domain_end();
+  for (int i = 0; i <= 200000; ++i) {
+    const double t = start + (end - start) * i / 200000;
+    const Eigen::Vector3d q = curve_point(cap.profile, t) - cap.axis_point;
+    const double rho = std::hypot(q.y(), q.z());
+    if (q.x() > 10 || rho < 0.3 || rho > 1.4) continue;  // the cap: 0.375 to 1.35 mm from the axis
+    ++tried;
+    const Eigen::Vector3d p = natural_point(cap, {angle(rng), t});
+    const Eigen::Vector3d found = natural_point(cap, natural_inverse(cap, p));
+    EXPECT_LT((found - p).norm(), 1e-9 * 214) << "profile parameter " << t;
+  }
+  EXPECT_GT(tried, 20);
 }
 
 }  // namespace

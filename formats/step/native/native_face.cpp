@@ -57,22 +57,39 @@ class Chart {
       angular_ = angular_directions(*analytic);
       if (const auto* sphere = std::get_if<SphereSurface>(analytic)) axis_ = {sphere->frame.origin, sphere->frame.z};
       if (const auto* cone = std::get_if<ConeSurface>(analytic)) axis_ = {cone->frame.origin, cone->frame.z};
-      if (const auto* revolution = std::get_if<RevolutionSurface>(analytic))
+      if (const auto* revolution = std::get_if<RevolutionSurface>(analytic)) {
         axis_ = {revolution->axis_point, revolution->axis_direction};
+        set_closed_profile(1, revolution->profile);
+      }
+      if (const auto* extrusion = std::get_if<ExtrusionSurface>(analytic)) set_closed_profile(0, extrusion->profile);
     } else {
       nurbs_ = &std::get<NurbsSurface>(surface);
     }
   }
 
   bool angular(int d) const { return angular_[d]; }
+  // The period of natural parameter d: a turn for an angle, the profile's domain for a closed profile's
+  // parameter (an extruded or revolved circle); none otherwise.
+  std::optional<double> period(int d) const {
+    if (angular_[d]) return kTurn;
+    if (closed_[d]) return closed_[d]->second - closed_[d]->first;
+    return std::nullopt;
+  }
+  // A closed profile's parameter range, [start, end].
+  const std::optional<std::pair<double, double>>& closed_profile(int d) const { return closed_[d]; }
   const NurbsSurface* nurbs() const { return nurbs_; }
 
+  // Angles and closed profiles' parameters unwrapped to lie within half a period of near's.
   Eigen::Vector2d locate(const Eigen::Vector3d& p, const std::optional<Eigen::Vector2d>& near) const {
-    if (analytic_) return natural_inverse(*analytic_, p, near);
-    return near ? nearest_surface_parameter(*nurbs_, p, *near) : nearest_surface_parameter(*nurbs_, p);
+    if (!analytic_) return near ? nearest_surface_parameter(*nurbs_, p, *near) : nearest_surface_parameter(*nurbs_, p);
+    if (!near || (!closed_[0] && !closed_[1])) return natural_inverse(*analytic_, p, near);
+    Eigen::Vector2d uv = natural_inverse(*analytic_, p, wrapped(*near));
+    for (int d = 0; d < 2; ++d)
+      if (closed_[d]) uv[d] += *period(d) * std::round(((*near)[d] - uv[d]) / *period(d));
+    return uv;
   }
   Eigen::Vector3d point(const Eigen::Vector2d& natural) const {
-    return analytic_ ? natural_point(*analytic_, natural) : surface_point(*nurbs_, natural.x(), natural.y());
+    return analytic_ ? natural_point(*analytic_, wrapped(natural)) : surface_point(*nurbs_, natural.x(), natural.y());
   }
   // Whether p is on the axis of revolution, where the angle means nothing (a pole, an apex).
   bool at_axis(const Eigen::Vector3d& p, double size) const {
@@ -97,9 +114,27 @@ class Chart {
   }
 
  private:
+  void set_closed_profile(int d, const NurbsCurve& profile) {
+    const double a = profile.domain_start(), b = profile.domain_end();
+    const Eigen::Vector3d start = curve_point(profile, a), end = curve_point(profile, b);
+    double extent = 0;
+    for (const auto& q : profile.points) extent = std::max(extent, (q - start).norm());
+    if ((end - start).norm() <= 1e-9 * extent) closed_[d] = {a, b};
+  }
+  // Closed profiles' parameters moved by whole periods into [start, end].
+  Eigen::Vector2d wrapped(Eigen::Vector2d natural) const {
+    for (int d = 0; d < 2; ++d) {
+      if (!closed_[d]) continue;
+      const auto [a, b] = *closed_[d];
+      if (natural[d] < a || natural[d] > b) natural[d] -= (b - a) * std::floor((natural[d] - a) / (b - a));
+    }
+    return natural;
+  }
+
   const AnalyticSurface* analytic_ = nullptr;
   const NurbsSurface* nurbs_ = nullptr;
   std::array<bool, 2> angular_{false, false};
+  std::array<std::optional<std::pair<double, double>>, 2> closed_;
   std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> axis_;  // point, unit direction
   std::array<std::optional<ArcSpans>, 2> arcs_;
 };
@@ -146,26 +181,29 @@ std::vector<UseSamples> locate_loop(const StepBound& bound, const std::vector<St
     out.push_back(std::move(s));
   }
   for (int d = 0; d < 2; ++d) {
-    if (!chart.angular(d)) continue;
+    if (!chart.period(d)) continue;
+    const double period = *chart.period(d);
     const double gap = out.back().natural.back()[d] - out.front().natural.front()[d];
-    const double turns = std::round(gap / kTurn);
+    const double turns = std::round(gap / period);
     if (turns == 0) continue;
-    if (std::abs(gap - turns * kTurn) > 1e-6) continue;  // not a whole turn: the closing gap is checked later
+    if (std::abs(gap - turns * period) > 1e-6 * period) continue;  // not a whole turn: the closing gap is checked later
     if (after_pole.empty())
       refuse("a loop wraps " + message_number(turns) + " times around the surface without closing (no seam edge)");
     if (after_pole.front() == 0) continue;  // it starts at a pole: the closing joint is the pole's bridge
     for (std::size_t k = after_pole.front(); k < out.size(); ++k)
-      for (auto& uv : out[k].natural) uv[d] -= turns * kTurn;
+      for (auto& uv : out[k].natural) uv[d] -= turns * period;
   }
   return out;
 }
 
 
-// Moves each loop by whole turns in the angular directions so that it lies beside the reference loop (the
-// outer bound): all loops of a face within one turn.
+// Moves each loop by whole periods in the periodic directions so that it lies beside the reference loop
+// (the outer bound): all loops of a face within one period. A closed profile's parameter is then moved
+// into the profile's range (the surface's NURBS is the profile cut to the loops' range).
 void gather_loops(std::vector<std::vector<UseSamples>>& loops, std::size_t reference, const Chart& chart) {
   for (int d = 0; d < 2; ++d) {
-    if (!chart.angular(d)) continue;
+    if (!chart.period(d)) continue;
+    const double period = *chart.period(d);
     auto centre = [&](const std::vector<UseSamples>& loop) {
       double lo = kInfinity, hi = -kInfinity;
       for (const auto& use : loop)
@@ -174,11 +212,25 @@ void gather_loops(std::vector<std::vector<UseSamples>>& loops, std::size_t refer
     };
     const double target = centre(loops[reference]);
     for (auto& loop : loops) {
-      const double turns = std::round((centre(loop) - target) / kTurn);
+      const double turns = std::round((centre(loop) - target) / period);
       if (turns != 0)
         for (auto& use : loop)
-          for (auto& uv : use.natural) uv[d] -= turns * kTurn;
+          for (auto& uv : use.natural) uv[d] -= turns * period;
     }
+    if (!chart.closed_profile(d)) continue;
+    const auto [start, end] = *chart.closed_profile(d);
+    double lo = kInfinity, hi = -kInfinity;
+    for (const auto& loop : loops)
+      for (const auto& use : loop)
+        for (const auto& uv : use.natural) lo = std::min(lo, uv[d]), hi = std::max(hi, uv[d]);
+    const double slack = 1e-9 * period;
+    const double shift = period * std::floor((lo - start + slack) / period);
+    if (hi - shift > end + slack)
+      refuse("its loops cross the start of its closed profile (" + message_number(lo - shift) + " to " +
+             message_number(hi - shift) + ", the profile " + message_number(start) + " to " + message_number(end) + ")");
+    for (auto& loop : loops)
+      for (auto& use : loop)
+        for (auto& uv : use.natural) uv[d] = std::clamp(uv[d] - shift, start, end);
   }
 }
 
@@ -364,6 +416,9 @@ TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& ed
       NaturalBox box{uv_box.min().x(), uv_box.max().x(), uv_box.min().y(), uv_box.max().y()};
       if (arcs[0]) box.u0 = arcs[0]->start, box.u1 = arcs[0]->end;
       if (arcs[1]) box.v0 = arcs[1]->start, box.v1 = arcs[1]->end;
+      // A closed profile is cut to the loops' range, which lies in its own (gather_loops).
+      if (const auto& range = chart.closed_profile(0)) box.u0 = std::max(box.u0, range->first), box.u1 = std::min(box.u1, range->second);
+      if (const auto& range = chart.closed_profile(1)) box.v0 = std::max(box.v0, range->first), box.v1 = std::min(box.v1, range->second);
       if (!(box.u1 > box.u0) || !(box.v1 > box.v0)) refuse("its loops bound no area");
       out.surface = analytic_to_nurbs(*analytic, box).surface;
     } else {
