@@ -82,7 +82,19 @@ INSTANTIATE_TEST_SUITE_P(Library, NativeStepLibrary,
                                            // lead wires: extruded whole circles, bounded by a seam edge
                                            "Inductor_THT.3dshapes/L_Axial_L20.0mm_D8.0mm_P5.08mm_Vertical.step",
                                            // end caps revolved from a 213 mm arc through the axis
-                                           "Inductor_THT.3dshapes/L_Axial_L6.6mm_D2.7mm_P10.16mm_Horizontal_Vishay_IM-2.step"),
+                                           "Inductor_THT.3dshapes/L_Axial_L6.6mm_D2.7mm_P10.16mm_Horizontal_Vishay_IM-2.step",
+                                           "Inductor_THT.3dshapes/L_Radial_D12.0mm_P5.00mm_Fastron_11P.step",
+                                           "Connector_Phoenix_MC.3dshapes/PhoenixContact_MC_1,5_2-G-3.5_1x02_P3.50mm_Horizontal.step",
+                                           "Connector_Phoenix_MC.3dshapes/PhoenixContact_MCV_1,5_2-G-3.81_1x02_P3.81mm_Vertical.step",
+                                           "Connector_PinHeader_2.54mm.3dshapes/PinHeader_2x01_P2.54mm_Vertical.step",
+                                           "Connector_PinHeader_2.54mm.3dshapes/PinHeader_1x01_P2.54mm_Horizontal.step",
+                                           "LED_THT.3dshapes/LED_Rectangular_W3.9mm_H1.9mm.step",
+                                           "Package_BGA.3dshapes/Texas_DSBGA-6_0.9x1.4mm_Layout2x3_P0.5mm.step",
+                                           "Package_BGA.3dshapes/WLP-4_0.86x0.86mm_P0.4mm.step",
+                                           "Package_DFN_QFN.3dshapes/AMS_QFN-4-1EP_2x2mm_P0.95mm.step",
+                                           "Package_DIP.3dshapes/DIP-4_W7.62mm_Socket.step",
+                                           "Package_QFP.3dshapes/LQFP-32_5x5mm_P0.5mm.step",
+                                           "Resistor_THT.3dshapes/R_Box_L13.0mm_W4.0mm_P9.00mm.step"),
                          [](const auto& info) { return corpus_test_name(info.param); });
 
 // KiCad's QFP parts keep edges up to 6e-4 mm off faces 0.1 mm across. OpenCASCADE's pcurves there are
