@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <map>
 
 #include "corpus_manifest.hpp"
@@ -24,11 +25,17 @@ const std::map<std::string, std::string>& expected_refusals() {
       {"step/as1_pe_203.stp", "#769 GEOMETRIC_SET: an item besides the B-rep"},
       {"step/io1-tu-203.stp", "#1203 GEOMETRIC_CURVE_SET: an item besides the B-rep"},
       {"step/splinecage.stp", "#12 GEOMETRIC_CURVE_SET: an item besides the B-rep"},
-      // Geometry outside the subset (step_geometry).
-      {"step/dm1-id-214.stp", "#667 QUASI_UNIFORM_CURVE: a curve type the native reader does not read"},
       // Faces whose trimming curves cannot be fitted (native_face).
       {"step/goteborg.step", "#36 ADVANCED_FACE: trim curve does not follow its edge"},
   };
+  return table;
+}
+
+// Corpus files where OpenCASCADE's areas are the approximate ones, with the slack its face areas need.
+// dm1-id-214: flat discs on QUASI_UNIFORM_SURFACEs bounded by exact rational circles; ours equal pi r^2 to
+// 2e-14 (DiscsOnAffinePatchesAreExact below), OCCT's are 6.5e-6 off.
+const std::map<std::string, double>& occt_area_slack() {
+  static const std::map<std::string, double> table = {{"step/dm1-id-214.stp", 1e-5}};
   return table;
 }
 
@@ -48,11 +55,32 @@ TEST_P(NativeStepCorpus, SameAsOpenCascade) {
     return;
   }
   ASSERT_EQ(refusal, expected_refusals().end()) << "read natively, though the table expects a refusal";
-  expect_same_as_occt(native, path, relative);
+  const auto slack = occt_area_slack().find(relative);
+  expect_same_as_occt(native, path, relative, slack == occt_area_slack().end() ? 1e-6 : slack->second);
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, NativeStepCorpus, ::testing::ValuesIn(corpus_paths({"step/"})),
                          [](const auto& info) { return corpus_test_name(info.param); });
+
+// dm1-id-214's discs (radius 5 and 7.5 mm, given in inches) lie on bilinear B-spline patches that are
+// affine maps of their planes: their trimming circles are mapped exactly, so their areas are pi r^2.
+TEST(NativeStepCorpusExact, DiscsOnAffinePatchesAreExact) {
+  const BrepTranslation native = read_step_native(corpus_file("step/dm1-id-214.stp"));
+  std::vector<double> areas;
+  std::function<void(const SceneNode&)> collect = [&](const SceneNode& node) {
+    for (const auto& shape : node.shapes)
+      if (const auto* face = std::get_if<TrimmedSurface>(&shape.geometry)) areas.push_back(trimmed_surface_area(*face, 1e-12));
+    for (const auto& child : node.children) collect(child);
+  };
+  collect(native.scene.root);
+  const double pi = 3.14159265358979323846;
+  for (double radius : {5.0, 7.5}) {
+    const double exact = pi * radius * radius;
+    double nearest = 1e300;
+    for (double a : areas) nearest = std::min(nearest, std::abs(a - exact));
+    EXPECT_LE(nearest, 1e-12 * exact) << "no face of area pi " << radius << "^2";
+  }
+}
 
 // Parts of the library (Debian's kicad-packages3d, fetched by scripts/fetch-part-library.sh) the corpus
 // lacks: the three made of several products placed by NEXT_ASSEMBLY_USAGE_OCCURRENCEs, and solids with

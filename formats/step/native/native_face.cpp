@@ -250,13 +250,43 @@ NurbsCurve segment_2d(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
   return out;
 }
 
-// The edge's path in a plane's chart: exact (an affine map keeps a NURBS a NURBS).
-NurbsCurve planar_pcurve(const NurbsCurve& path, const AxisFrame& frame, bool forward) {
+// An affine chart of a plane: (u, v) = uv0 + ((p - origin) . du, (p - origin) . dv), du and dv the dual
+// basis of the plane's parameter directions (a point off the plane is projected along its normal).
+struct AffineChart {
+  Eigen::Vector3d origin, du, dv;
+  Eigen::Vector2d uv0 = Eigen::Vector2d::Zero();
+  Eigen::Vector2d operator()(const Eigen::Vector3d& p) const { return uv0 + Eigen::Vector2d((p - origin).dot(du), (p - origin).dot(dv)); }
+};
+
+// A polynomial bilinear B-spline patch (2 x 2 control points) whose net is a parallelogram (within 1e-12
+// of its size) is an affine map of the plane: its chart, if so (STEP writers' flat faces, dm1-id-214's
+// QUASI_UNIFORM_SURFACEs).
+std::optional<AffineChart> affine_chart(const NurbsSurface& s) {
+  if (s.u_order != 2 || s.v_order != 2 || s.u_count != 2 || s.v_count != 2) return std::nullopt;
+  if (s.is_rational() && (s.weights[1] != s.weights[0] || s.weights[2] != s.weights[0] || s.weights[3] != s.weights[0]))
+    return std::nullopt;
+  const Eigen::Vector3d p00 = s.points[static_cast<std::size_t>(s.index(0, 0))], p10 = s.points[static_cast<std::size_t>(s.index(1, 0))];
+  const Eigen::Vector3d p01 = s.points[static_cast<std::size_t>(s.index(0, 1))], p11 = s.points[static_cast<std::size_t>(s.index(1, 1))];
+  const double du = s.u_end() - s.u_start(), dv = s.v_end() - s.v_start();
+  const Eigen::Vector3d a = (p10 - p00) / du, b = (p01 - p00) / dv;
+  const double size = std::max((p11 - p00).norm(), (p10 - p01).norm());
+  if (!(a.cross(b).norm() > 0) || (p11 - p10 - p01 + p00).norm() > 1e-12 * size) return std::nullopt;
+  // The dual basis in the plane: du . a = 1, du . b = 0, and likewise dv.
+  Eigen::Matrix2d gram;
+  gram << a.dot(a), a.dot(b), a.dot(b), b.dot(b);
+  const Eigen::Matrix2d inverse = gram.inverse();
+  AffineChart chart{p00, inverse(0, 0) * a + inverse(0, 1) * b, inverse(1, 0) * a + inverse(1, 1) * b};
+  chart.uv0 = Eigen::Vector2d(s.u_start(), s.v_start());
+  return chart;
+}
+
+// The edge's path in an affine chart: exact (an affine map keeps a NURBS a NURBS).
+NurbsCurve affine_pcurve(const NurbsCurve& path, const AffineChart& chart, bool forward) {
   NurbsCurve out = forward ? path : reversed(path);
   out.dimension = 2;
   for (auto& p : out.points) {
-    const Eigen::Vector3d local = to_local(frame, p);
-    p = Eigen::Vector3d(local.x(), local.y(), 0);
+    const Eigen::Vector2d uv = chart(p);
+    p = Eigen::Vector3d(uv.x(), uv.y(), 0);
   }
   return out;
 }
@@ -291,6 +321,40 @@ TrimLoop close_loop(TrimLoop loop, const std::function<Eigen::Vector3d(const Eig
   return loop;
 }
 
+std::size_t reference_bound(const StepFace& face) {
+  for (std::size_t b = 0; b < face.bounds.size(); ++b)
+    if (face.bounds[b].outer) return b;
+  return 0;
+}
+
+// A face on a plane, or on a B-spline patch that is an affine map of one: every trimming curve exact.
+TrimmedSurface affine_face(const StepFace& face, const AffineChart& chart, const std::vector<StepEdge>& edges,
+                           double tolerance, std::optional<NurbsSurface> surface) {
+  TrimmedSurface out;
+  Eigen::AlignedBox2d box;
+  for (const auto& bound : face.bounds) {
+    TrimLoop loop;
+    for (const auto& use : bound.uses) {
+      NurbsCurve curve = affine_pcurve(edges[static_cast<std::size_t>(use.edge)].path, chart, use.forward);
+      for (const auto& p : curve.points) box.extend(Eigen::Vector2d(p.x(), p.y()));
+      loop.segments.emplace_back(std::move(curve));
+      loop.edges.push_back({use.edge, !use.forward});
+    }
+    out.loops.push_back(std::move(loop));
+  }
+  if (box.isEmpty() || !(box.sizes().minCoeff() > 0)) refuse("its loops bound no area in its plane");
+  // A plane's NURBS covers the loops; a patch is its own.
+  const PlaneSurface plane{axis_frame(chart.origin, chart.du.cross(chart.dv), chart.du, "plane")};
+  out.surface = surface ? *surface
+                        : analytic_to_nurbs(AnalyticSurface{plane}, {box.min().x(), box.max().x(), box.min().y(), box.max().y()}).surface;
+  const TrimmedSurface& result = out;
+  const auto point = [&](const Eigen::Vector2d& uv) { return surface_point(result.surface, uv.x(), uv.y()); };
+  for (auto& loop : out.loops) loop = close_loop(std::move(loop), point, box.sizes().maxCoeff(), tolerance);
+  return out;
+}
+
+}  // namespace
+
 double face_size(const StepFace& face, const std::vector<StepEdge>& edges) {
   Eigen::AlignedBox3d box;
   for (const auto& bound : face.bounds)
@@ -299,42 +363,16 @@ double face_size(const StepFace& face, const std::vector<StepEdge>& edges) {
   return box.isEmpty() ? 0.0 : box.diagonal().norm();
 }
 
-std::size_t reference_bound(const StepFace& face) {
-  for (std::size_t b = 0; b < face.bounds.size(); ++b)
-    if (face.bounds[b].outer) return b;
-  return 0;
-}
-
-TrimmedSurface plane_face(const StepFace& face, const PlaneSurface& plane, const std::vector<StepEdge>& edges,
-                          double tolerance) {
-  TrimmedSurface out;
-  Eigen::AlignedBox2d box;
-  for (const auto& bound : face.bounds) {
-    TrimLoop loop;
-    for (const auto& use : bound.uses) {
-      NurbsCurve curve = planar_pcurve(edges[static_cast<std::size_t>(use.edge)].path, plane.frame, use.forward);
-      for (const auto& p : curve.points) box.extend(Eigen::Vector2d(p.x(), p.y()));
-      loop.segments.emplace_back(std::move(curve));
-      loop.edges.push_back({use.edge, !use.forward});
-    }
-    out.loops.push_back(std::move(loop));
-  }
-  if (box.isEmpty() || !(box.sizes().minCoeff() > 0)) refuse("its loops bound no area in its plane");
-  out.surface = analytic_to_nurbs(AnalyticSurface{plane}, {box.min().x(), box.max().x(), box.min().y(), box.max().y()}).surface;
-  const auto point = [&](const Eigen::Vector2d& uv) { return natural_point(AnalyticSurface{plane}, uv); };
-  for (auto& loop : out.loops) loop = close_loop(std::move(loop), point, box.sizes().maxCoeff(), tolerance);
-  return out;
-}
-
-}  // namespace
-
 TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& edges, double fit_tolerance) {
   if (face.bounds.empty()) refuse("a face without bounds");
   const double size = face_size(face, edges);
   TrimmedSurface out;
   const auto* analytic = std::get_if<AnalyticSurface>(&face.surface);
   if (analytic && std::holds_alternative<PlaneSurface>(*analytic)) {
-    out = plane_face(face, std::get<PlaneSurface>(*analytic), edges, fit_tolerance);
+    const AxisFrame& frame = std::get<PlaneSurface>(*analytic).frame;
+    out = affine_face(face, AffineChart{frame.origin, frame.x, frame.y}, edges, fit_tolerance, std::nullopt);
+  } else if (const auto* patch = std::get_if<NurbsSurface>(&face.surface); patch && affine_chart(*patch)) {
+    out = affine_face(face, *affine_chart(*patch), edges, fit_tolerance, *patch);
   } else {
     Chart chart(face.surface);
     std::vector<std::vector<UseSamples>> loops;

@@ -29,6 +29,9 @@
 
 namespace cadnurbs::step {
 
+// The diagonal of the box of the face's edges' control points (0 for a face without edges): the face's size.
+double face_size(const StepFace& face, const std::vector<StepEdge>& edges);
+
 // `fit_tolerance`: in millimetres, the largest distance of a fitted trimming curve's image from its edge.
 TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& edges, double fit_tolerance);
 

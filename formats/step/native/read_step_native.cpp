@@ -211,10 +211,7 @@ class SceneBuilder {
         shape.source_type = surface_type(face.surface);
         shape.colour = colour_of(entity);
         try {
-          Eigen::AlignedBox3d box;
-          for (const auto& bound : face.bounds)
-            for (const auto& use : bound.uses) box.extend(topology_.edges()[static_cast<std::size_t>(use.edge)].start);
-          const double size = box.isEmpty() ? 1.0 : std::max(box.diagonal().norm(), 1e-6);
+          const double size = std::max(face_size(face, topology_.edges()), 1e-6);
           TrimmedSurface trimmed = native_face(face, topology_.edges(), 1e-7 * size);
           for (auto& line : repair_trimming_loops(trimmed, "face"))
             content.repairs.emplace_back(child_path, shape.source_entity + " (" + shape.source_type + "): " + line);

@@ -36,22 +36,72 @@ std::vector<double> expanded_knots(const Value& multiplicities, const Value& kno
   return out;
 }
 
+// The B-spline subtypes whose knots ISO 10303-42 implies from the degree and the number of control points.
+enum class ImpliedKnots { uniform, quasi_uniform, bezier };
+
+// ISO 10303-42's knots for `count` control points of `degree`: uniform: -degree, ..., count, each once
+// (the curve runs over [0, count - degree]); quasi-uniform: 0 and count - degree with multiplicity
+// degree + 1, the integers between once; Bezier: 0 to (count - 1) / degree, inner knots degree times, end
+// knots degree + 1 times (count - 1 must be a multiple of the degree).
+std::vector<double> implied_knots(ImpliedKnots form, int degree, int count) {
+  if (degree < 1 || count < degree + 1)
+    throw part21::ValueError(std::to_string(count) + " control points for degree " + std::to_string(degree));
+  std::vector<double> out;
+  switch (form) {
+    case ImpliedKnots::uniform:
+      for (int i = 0; i < count + degree + 1; ++i) out.push_back(i - degree);
+      break;
+    case ImpliedKnots::quasi_uniform:
+      out.assign(static_cast<std::size_t>(degree), 0.0);
+      for (int i = 0; i <= count - degree; ++i) out.push_back(i);
+      out.insert(out.end(), static_cast<std::size_t>(degree), static_cast<double>(count - degree));
+      break;
+    case ImpliedKnots::bezier: {
+      if ((count - 1) % degree != 0)
+        throw part21::ValueError("a Bezier form with " + std::to_string(count) + " control points of degree " +
+                                 std::to_string(degree));
+      const int segments = (count - 1) / degree;
+      out.push_back(0.0);
+      for (int k = 0; k <= segments; ++k) out.insert(out.end(), static_cast<std::size_t>(degree), static_cast<double>(k));
+      out.push_back(segments);
+      break;
+    }
+  }
+  return out;
+}
+
+// The implied-knot subtype that `entity` is or holds, if any.
+std::optional<ImpliedKnots> implied_form(const StepContext& context, EntityId entity, TypeId uniform,
+                                         TypeId quasi_uniform, TypeId bezier) {
+  const std::pair<TypeId, ImpliedKnots> forms[] = {
+      {uniform, ImpliedKnots::uniform}, {quasi_uniform, ImpliedKnots::quasi_uniform}, {bezier, ImpliedKnots::bezier}};
+  for (const auto& [type, form] : forms)
+    if (type != part21::none && context.is(entity, type)) return form;
+  return std::nullopt;
+}
+
 NurbsCurve read_bspline_curve(const StepContext& context, EntityId curve) {
   const auto& t = context.types;
   const part21::Model& m = context.model;
-  // Simple B_SPLINE_CURVE_WITH_KNOTS: name, degree, points, form, closed, self_intersect, mults, knots, spec.
-  // Complex: B_SPLINE_CURVE(degree, points, form, closed, self) B_SPLINE_CURVE_WITH_KNOTS(mults, knots, spec)
-  // RATIONAL_B_SPLINE_CURVE(weights).
-  const bool simple = m.type(curve) == t.b_spline_curve_with_knots;
-  const part21::Record& shape = simple ? *m.record(curve, t.b_spline_curve_with_knots)
-                                       : context.record(curve, t.b_spline_curve, "a B-spline curve");
-  const part21::Record& knotted = context.record(curve, t.b_spline_curve_with_knots, "a B-spline curve with knots");
+  // Simple B_SPLINE_CURVE_WITH_KNOTS: name, degree, points, form, closed, self_intersect, mults, knots, spec;
+  // simple UNIFORM_CURVE, QUASI_UNIFORM_CURVE, BEZIER_CURVE: name, degree, points, form, closed, self.
+  // Complex: B_SPLINE_CURVE(degree, points, form, closed, self) and B_SPLINE_CURVE_WITH_KNOTS(mults, knots,
+  // spec) or an empty implied-knot record; RATIONAL_B_SPLINE_CURVE(weights).
+  const std::optional<ImpliedKnots> implied = implied_form(context, curve, t.uniform_curve, t.quasi_uniform_curve, t.bezier_curve);
+  const TypeId type = m.type(curve);
+  const bool simple = type != part21::none;
+  const part21::Record& shape = simple ? m.records(curve)[0] : context.record(curve, t.b_spline_curve, "a B-spline curve");
   const std::size_t first = simple ? 1 : 0, knots_first = simple ? 6 : 0;
   NurbsCurve out;
   out.order = static_cast<int>(m.parameter(shape, first).integer()) + 1;
   const Value points = m.parameter(shape, first + 1);
   for (std::size_t i = 0; i < points.size(); ++i) out.points.push_back(read_point(context, points.item(i).reference()));
-  out.knots = expanded_knots(m.parameter(knotted, knots_first), m.parameter(knotted, knots_first + 1));
+  if (implied) {
+    out.knots = implied_knots(*implied, out.order - 1, static_cast<int>(out.points.size()));
+  } else {
+    const part21::Record& knotted = context.record(curve, t.b_spline_curve_with_knots, "a B-spline curve with knots");
+    out.knots = expanded_knots(m.parameter(knotted, knots_first), m.parameter(knotted, knots_first + 1));
+  }
   if (!simple && context.is(curve, t.rational_b_spline_curve)) {
     const Value weights = m.parameter(*m.record(curve, t.rational_b_spline_curve), 0);
     for (std::size_t i = 0; i < weights.size(); ++i) out.weights.push_back(weights.item(i).number());
@@ -71,11 +121,11 @@ NurbsSurface read_bspline_surface(const StepContext& context, EntityId surface) 
   // self_intersect, u_mults, v_mults, u_knots, v_knots, spec. Complex: B_SPLINE_SURFACE(u_degree, v_degree,
   // points, form, u_closed, v_closed, self) B_SPLINE_SURFACE_WITH_KNOTS(u_mults, v_mults, u_knots, v_knots,
   // spec) RATIONAL_B_SPLINE_SURFACE(weights).
-  const bool simple = m.type(surface) == t.b_spline_surface_with_knots;
-  const part21::Record& shape = simple ? *m.record(surface, t.b_spline_surface_with_knots)
-                                       : context.record(surface, t.b_spline_surface, "a B-spline surface");
-  const part21::Record& knotted =
-      context.record(surface, t.b_spline_surface_with_knots, "a B-spline surface with knots");
+  // Simple UNIFORM_SURFACE, QUASI_UNIFORM_SURFACE, BEZIER_SURFACE: as B_SPLINE_SURFACE, knots implied.
+  const std::optional<ImpliedKnots> implied =
+      implied_form(context, surface, t.uniform_surface, t.quasi_uniform_surface, t.bezier_surface);
+  const bool simple = m.type(surface) != part21::none;
+  const part21::Record& shape = simple ? m.records(surface)[0] : context.record(surface, t.b_spline_surface, "a B-spline surface");
   const std::size_t first = simple ? 1 : 0, knots_first = simple ? 8 : 0;
   const bool rational = !simple && context.is(surface, t.rational_b_spline_surface);
   NurbsSurface out;
@@ -103,8 +153,15 @@ NurbsSurface read_bspline_surface(const StepContext& context, EntityId surface) 
         out.weights[static_cast<std::size_t>(out.index(i, j))] = row.item(static_cast<std::size_t>(j)).number();
     }
   }
-  out.u_knots = expanded_knots(m.parameter(knotted, knots_first), m.parameter(knotted, knots_first + 2));
-  out.v_knots = expanded_knots(m.parameter(knotted, knots_first + 1), m.parameter(knotted, knots_first + 3));
+  if (implied) {
+    out.u_knots = implied_knots(*implied, out.u_order - 1, out.u_count);
+    out.v_knots = implied_knots(*implied, out.v_order - 1, out.v_count);
+  } else {
+    const part21::Record& knotted =
+        context.record(surface, t.b_spline_surface_with_knots, "a B-spline surface with knots");
+    out.u_knots = expanded_knots(m.parameter(knotted, knots_first), m.parameter(knotted, knots_first + 2));
+    out.v_knots = expanded_knots(m.parameter(knotted, knots_first + 1), m.parameter(knotted, knots_first + 3));
+  }
   try {
     validate(out, "surface");
   } catch (const GeometryError& error) {
@@ -174,7 +231,8 @@ StepCurve read_curve(const StepContext& context, EntityId curve) {
     }
     if ((type == t.surface_curve || type == t.seam_curve) && type != part21::none)
       return read_curve(context, m.parameter(m.records(curve)[0], 1).reference());
-    if (context.is(curve, t.b_spline_curve_with_knots)) return read_bspline_curve(context, curve);
+    for (TypeId bspline : {t.b_spline_curve_with_knots, t.b_spline_curve, t.uniform_curve, t.quasi_uniform_curve, t.bezier_curve})
+      if (bspline != part21::none && context.is(curve, bspline)) return read_bspline_curve(context, curve);
     context.refuse(curve, "a curve type the native reader does not read");
   });
 }
@@ -187,8 +245,8 @@ StepSurface read_surface(const StepContext& context, EntityId surface) {
     auto frame = [&] { return read_frame(context, m.parameter(m.records(surface)[0], 1).reference()); };
     auto length = [&](std::size_t k) { return positive_length(context, surface, m.parameter(m.records(surface)[0], k)); };
     try {
-      if (type == part21::none) {
-        if (context.is(surface, t.b_spline_surface_with_knots)) return read_bspline_surface(context, surface);
+      if (type == part21::none || type == t.uniform_surface || type == t.quasi_uniform_surface || type == t.bezier_surface) {
+        if (type != part21::none || context.is(surface, t.b_spline_surface)) return read_bspline_surface(context, surface);
       } else if (type == t.plane) {
         return AnalyticSurface{PlaneSurface{frame()}};
       } else if (type == t.cylindrical_surface) {

@@ -12,10 +12,12 @@ struct StepTypes {
   // geometry
   TypeId cartesian_point, direction, vector, axis1_placement, axis2_placement_3d;
   TypeId line, circle, ellipse, b_spline_curve, b_spline_curve_with_knots, rational_b_spline_curve;
+  TypeId uniform_curve, quasi_uniform_curve, bezier_curve;  // B-spline curves whose knots are implied
   TypeId surface_curve, seam_curve, trimmed_curve;
   TypeId plane, cylindrical_surface, conical_surface, spherical_surface, toroidal_surface;
   TypeId surface_of_revolution, surface_of_linear_extrusion;
   TypeId b_spline_surface, b_spline_surface_with_knots, rational_b_spline_surface, offset_surface;
+  TypeId uniform_surface, quasi_uniform_surface, bezier_surface;
   // topology
   TypeId advanced_face, face_bound, face_outer_bound, edge_loop, vertex_loop, oriented_edge, edge_curve,
       vertex_point;
