@@ -228,9 +228,17 @@ Eigen::Vector2d revolution_inverse(const RevolutionSurface& s, const Eigen::Vect
       const Eigen::Vector3d c = curve_point(s.profile, found) - s.axis_point;
       return std::pair{found, std::hypot(c.dot(*e) - target, c.dot(d) - z)};
     };
-    const auto [plus, plus_distance] = nearest(rho);
-    const auto [minus, minus_distance] = nearest(-rho);
-    t = minus_distance < plus_distance ? minus : plus;
+    // The side near's profile point is on first: along an edge the next point is almost always there.
+    double side = 1.0;
+    if (near) side = (curve_point(s.profile, std::clamp((*near)[1], s.profile.domain_start(), s.profile.domain_end())) - s.axis_point).dot(*e) < 0 ? -1.0 : 1.0;
+    const auto [first, first_distance] = nearest(side * rho);
+    const double scale = std::max({1.0, rho, std::abs(z)});
+    if (near && first_distance <= 1e-9 * scale) {
+      t = first;
+    } else {
+      const auto [second, second_distance] = nearest(-side * rho);
+      t = second_distance < first_distance ? second : first;
+    }
   } else {
     t = profile_minimum(s.profile, component(near, 1), [&](const NurbsCurve& piece, double t) {
       const Meridian m = meridian(piece, s.axis_point, d, t);
