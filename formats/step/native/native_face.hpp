@@ -4,7 +4,8 @@
 //
 // How each edge use gets its curve in (u, v):
 // - on a plane, exactly: the edge's NURBS mapped by the plane's affine chart (control points projected,
-//   weights and knots kept);
+//   weights and knots kept); likewise on a bilinear B-spline patch whose net is a parallelogram (an
+//   affine map of its plane);
 // - on the other surfaces the edge is sampled and each sample located on the surface (closed forms on the
 //   analytic surfaces, Newton on B-splines), continuing from the previous sample so that angles unwrap
 //   across seams; an edge whose samples keep one parameter (a ruling, a parallel, a meridian, a B-spline's
@@ -12,6 +13,8 @@
 //   (core/fit_trim_curve) within `fit_tolerance` of the edge's projection onto the surface, checked at
 //   samples (within a hundredth of the edge's distance from the surface where that is larger: files keep
 //   edges within a tolerance of their faces, not on them);
+// - a closed profile's parameter (an extruded or revolved whole circle) is periodic like an angle: loops
+//   unwrap across the profile's start and are then moved into its range;
 // - a use that starts or ends at a pole (sphere, cone apex) takes the angle of its next sample; the gap
 //   this leaves between uses is bridged by a straight segment at the pole (one point in 3D).
 // An analytic surface becomes its exact NURBS over the face's box (core/analytic_surface): angles as far as
