@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/conic_curves.hpp"
@@ -84,6 +85,20 @@ int TopologyReader::edge(EntityId edge_curve) {
             context_.refuse(edge_curve, "a closed edge whose vertex is not at its curve's ends");
           t1 = same_sense ? a : b;
           t2 = same_sense ? b : a;
+        }
+        if (!closed && (same_sense ? !(t2 > t1) : !(t1 > t2))) {
+          // The curve passes a vertex more than once (KiCad's Bourns toroids: a wire's curve with a small
+          // loop, both vertices near both passes): the passes in the edge's sense nearest their vertices.
+          double size = 0;
+          for (const auto& q : curve.points) size = std::max(size, (q - curve.points.front()).norm());
+          const double within = 1e-3 * (size + 1.0);
+          double best = std::numeric_limits<double>::infinity();
+          for (double c1 : curve_parameters_near(curve, p1, within))
+            for (double c2 : curve_parameters_near(curve, p2, within)) {
+              if (same_sense ? !(c2 > c1) : !(c1 > c2)) continue;
+              const double off = std::max((curve_point(curve, c1) - p1).norm(), (curve_point(curve, c2) - p2).norm());
+              if (off < best) best = off, t1 = c1, t2 = c2;
+            }
         }
         if (same_sense ? !(t2 > t1) : !(t1 > t2)) context_.refuse(edge_curve, "its vertices run against its curve's sense");
         e.path = piece(curve, std::min(t1, t2), std::max(t1, t2));
