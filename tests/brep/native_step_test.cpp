@@ -3,6 +3,7 @@
 // its scene passes expect_same_as_occt (native_comparison.hpp).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -27,6 +28,8 @@ const std::map<std::string, std::string>& expected_refusals() {
       {"step/splinecage.stp", "#12 GEOMETRIC_CURVE_SET: an item besides the B-rep"},
       // Faces whose trimming curves cannot be fitted (native_face).
       {"step/goteborg.step", "#36 ADVANCED_FACE: trim curve does not follow its edge"},
+      // Bands bounded by two whole circles and no seam edge (long tier).
+      {"step/11752.stp", "#101 ADVANCED_FACE: a loop wraps 1 times around the surface without closing"},
   };
   return table;
 }
@@ -35,7 +38,9 @@ const std::map<std::string, std::string>& expected_refusals() {
 // dm1-id-214: flat discs on QUASI_UNIFORM_SURFACEs bounded by exact rational circles; ours equal pi r^2 to
 // 2e-14 (DiscsOnAffinePatchesAreExact below), OCCT's are 6.5e-6 off.
 const std::map<std::string, double>& occt_area_slack() {
-  static const std::map<std::string, double> table = {{"step/dm1-id-214.stp", 1e-5}};
+  // Ventilator (long tier): OCCT's areas are up to 6e-3 off; its face 11, a hexagon less a disc bounded by
+  // two LINE-and-CIRCLE loops, is 0.6 % too large in OCCT's reading and exact in ours (test below).
+  static const std::map<std::string, double> table = {{"step/dm1-id-214.stp", 1e-5}, {"step/Ventilator.stp", 1e-2}};
   return table;
 }
 
@@ -69,7 +74,9 @@ TEST(NativeStepCorpusExact, DiscsOnAffinePatchesAreExact) {
   std::vector<double> areas;
   std::function<void(const SceneNode&)> collect = [&](const SceneNode& node) {
     for (const auto& shape : node.shapes)
-      if (const auto* face = std::get_if<TrimmedSurface>(&shape.geometry)) areas.push_back(trimmed_surface_area(*face, 1e-12));
+      if (const auto* face = std::get_if<TrimmedSurface>(&shape.geometry);
+          face && face->surface.u_order == 2 && face->surface.v_order == 2)  // the flat patches
+        areas.push_back(trimmed_surface_area(*face, 1e-12));
     for (const auto& child : node.children) collect(child);
   };
   collect(native.scene.root);
@@ -80,6 +87,28 @@ TEST(NativeStepCorpusExact, DiscsOnAffinePatchesAreExact) {
     for (double a : areas) nearest = std::min(nearest, std::abs(a - exact));
     EXPECT_LE(nearest, 1e-12 * exact) << "no face of area pi " << radius << "^2";
   }
+}
+
+// Ventilator's face 11: a plane bounded by a hexagon of LINEs and a circle of radius 7.45 mm in two
+// arcs: its area is the hexagon's (shoelace over its vertices) less pi r^2.
+TEST(NativeStepCorpusExact, VentilatorsHexagonLessADisc) {
+  const BrepTranslation native = read_step_native(corpus_file("step/Ventilator.stp"));
+  const SceneNode* part = &native.scene.root;
+  while (part->shapes.empty() && !part->children.empty()) part = &part->children.front();
+  ASSERT_GT(part->shapes.size(), 10u);
+  const std::vector<Eigen::Vector2d> hexagon = {
+      {-4.98087795914, -8.26518933577}, {4.69186074854, -8.43261185614}, {9.64878646194, -0.153035328813},
+      {4.9569257134, 8.27957652733},    {-4.69186074854, 8.43261185614}, {-9.64878646194, 0.153035328813}};
+  double twice = 0;
+  for (std::size_t i = 0; i < hexagon.size(); ++i) {
+    const auto& a = hexagon[i];
+    const auto& b = hexagon[(i + 1) % hexagon.size()];
+    twice += a.x() * b.y() - b.x() * a.y();
+  }
+  const double radius = std::hypot(3.5717202626, 6.53799008608);
+  const double exact = 0.5 * twice - 3.14159265358979323846 * radius * radius;
+  const auto& face = std::get<TrimmedSurface>(part->shapes[10].geometry);
+  EXPECT_NEAR(trimmed_surface_area(face, 1e-12), exact, 1e-10 * exact);
 }
 
 // Parts of the library (Debian's kicad-packages3d, fetched by scripts/fetch-part-library.sh) the corpus
