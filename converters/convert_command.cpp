@@ -6,6 +6,7 @@
 #include "converters/commands.hpp"
 #include "converters/file_formats.hpp"
 #include "converters/conversion.hpp"
+#include "converters/scene_preparation.hpp"
 #include "core/length_unit.hpp"
 #include "core/number_format.hpp"
 #include "formats/common/file_io.hpp"
@@ -180,6 +181,8 @@ int run_convert(const std::vector<std::string>& args, const CommandContext& cont
 
   const LoadedInput input = load_input(request);
   const BrepTranslation& loaded = input.loaded;
+  // A part whose size cannot be used fails with its one line, before the reader's notes and repairs.
+  checked_diagonal(input.scene, in);
   for (const auto& line : loaded.notes) std::cerr << in << ": " << line << "\n";
   for (const auto& line : loaded.repairs) std::cerr << in << ": " << line << "\n";
   for (const auto& f : loaded.fallbacks)
