@@ -103,12 +103,15 @@ class TrimFitter {
   }
 
   // c with its control points moved into the domain, if one is given and the result stays within
-  // kDomainClampSlack tolerances at every check; c otherwise.
-  NurbsCurve within_domain(const NurbsCurve& c, const std::vector<Sample>& samples) const {
-    if (!domain_) return c;
-    NurbsCurve clamped = c;
-    for (auto& p : clamped.points) p.head<2>() = p.head<2>().cwiseMax(domain_->min()).cwiseMin(domain_->max());
-    return check(clamped, samples, false).max_distance <= kDomainClampSlack * tolerance_ ? clamped : c;
+  // kDomainClampSlack tolerances at every check; c otherwise. With its check.
+  std::pair<NurbsCurve, Check> within_domain(const NurbsCurve& c, const std::vector<Sample>& samples) const {
+    if (domain_) {
+      NurbsCurve clamped = c;
+      for (auto& p : clamped.points) p.head<2>() = p.head<2>().cwiseMax(domain_->min()).cwiseMin(domain_->max());
+      Check checked = check(clamped, samples, false);
+      if (checked.max_distance <= kDomainClampSlack * tolerance_) return {std::move(clamped), std::move(checked)};
+    }
+    return {c, check(c, samples, false)};
   }
 
   // The samples with a new one at the midpoint of every failed interval.
@@ -284,8 +287,8 @@ TrimCurveFit fit_trim_curve(const NurbsCurve& edge, double t0, double t1, const 
     }
   }
   // (A line or polyline between located points stays in the domain; an interpolant may overshoot it.)
-  curve = fitter.within_domain(curve, samples);
-  return result(curve, fitter.check(curve, samples, false), samples);
+  const auto [kept_curve, kept_check] = fitter.within_domain(curve, samples);
+  return result(kept_curve, kept_check, samples);
 }
 
 }  // namespace cadnurbs

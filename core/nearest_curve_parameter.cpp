@@ -1,10 +1,9 @@
 #include "core/nearest_curve_parameter.hpp"
 
-#include <vector>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace cadnurbs {
 

@@ -328,8 +328,9 @@ std::size_t reference_bound(const StepFace& face) {
 }
 
 // A face on a plane, or on a B-spline patch that is an affine map of one: every trimming curve exact.
+// `patch`: the B-spline patch the face lies on; none for a plane, whose NURBS is made over the loops' box.
 TrimmedSurface affine_face(const StepFace& face, const AffineChart& chart, const std::vector<StepEdge>& edges,
-                           double tolerance, std::optional<NurbsSurface> surface) {
+                           double tolerance, const NurbsSurface* patch) {
   TrimmedSurface out;
   Eigen::AlignedBox2d box;
   for (const auto& bound : face.bounds) {
@@ -343,10 +344,12 @@ TrimmedSurface affine_face(const StepFace& face, const AffineChart& chart, const
     out.loops.push_back(std::move(loop));
   }
   if (box.isEmpty() || !(box.sizes().minCoeff() > 0)) refuse("its loops bound no area in its plane");
-  // A plane's NURBS covers the loops; a patch is its own.
-  const PlaneSurface plane{axis_frame(chart.origin, chart.du.cross(chart.dv), chart.du, "plane")};
-  out.surface = surface ? *surface
-                        : analytic_to_nurbs(AnalyticSurface{plane}, {box.min().x(), box.max().x(), box.min().y(), box.max().y()}).surface;
+  if (patch) {
+    out.surface = *patch;
+  } else {
+    const PlaneSurface plane{axis_frame(chart.origin, chart.du.cross(chart.dv), chart.du, "plane")};
+    out.surface = analytic_to_nurbs(AnalyticSurface{plane}, {box.min().x(), box.max().x(), box.min().y(), box.max().y()}).surface;
+  }
   const TrimmedSurface& result = out;
   const auto point = [&](const Eigen::Vector2d& uv) { return surface_point(result.surface, uv.x(), uv.y()); };
   for (auto& loop : out.loops) loop = close_loop(std::move(loop), point, box.sizes().maxCoeff(), tolerance);
@@ -368,11 +371,13 @@ TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& ed
   const double size = face_size(face, edges);
   TrimmedSurface out;
   const auto* analytic = std::get_if<AnalyticSurface>(&face.surface);
+  const auto* patch = std::get_if<NurbsSurface>(&face.surface);
+  const std::optional<AffineChart> flat_patch = patch ? affine_chart(*patch) : std::nullopt;
   if (analytic && std::holds_alternative<PlaneSurface>(*analytic)) {
     const AxisFrame& frame = std::get<PlaneSurface>(*analytic).frame;
-    out = affine_face(face, AffineChart{frame.origin, frame.x, frame.y}, edges, fit_tolerance, std::nullopt);
-  } else if (const auto* patch = std::get_if<NurbsSurface>(&face.surface); patch && affine_chart(*patch)) {
-    out = affine_face(face, *affine_chart(*patch), edges, fit_tolerance, *patch);
+    out = affine_face(face, AffineChart{frame.origin, frame.x, frame.y}, edges, fit_tolerance, nullptr);
+  } else if (flat_patch) {
+    out = affine_face(face, *flat_patch, edges, fit_tolerance, patch);
   } else {
     Chart chart(face.surface);
     std::vector<std::vector<UseSamples>> loops;
@@ -410,6 +415,11 @@ TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& ed
       return chart.to_nurbs(chart.locate(p, chart.to_natural(previous)));
     };
 
+    // On a B-spline the located points lie in its domain; so must the fitted curves (see fit_trim_curve).
+    std::optional<Eigen::AlignedBox2d> domain;
+    if (patch)
+      domain = Eigen::AlignedBox2d(Eigen::Vector2d(patch->u_start(), patch->v_start()),
+                                   Eigen::Vector2d(patch->u_end(), patch->v_end()));
     Eigen::AlignedBox2d uv_box;
     for (const auto& loop : loops) {
       TrimLoop trim;
@@ -436,11 +446,6 @@ TrimmedSurface native_face(const StepFace& face, const std::vector<StepEdge>& ed
           // The offset varies along the edge; between our samples it may be larger (a torus seam 3e-6 mm
           // off its face): the fit refuses only points farther off than any edge a file keeps.
           const double off_surface = 4 * use.offset + 1e-4 * size + tolerance;
-          // On a B-spline the located points lie in its domain; so must the curve (see fit_trim_curve).
-          std::optional<Eigen::AlignedBox2d> domain;
-          if (const NurbsSurface* nurbs = chart.nurbs())
-            domain = Eigen::AlignedBox2d(Eigen::Vector2d(nurbs->u_start(), nurbs->v_start()),
-                                         Eigen::Vector2d(nurbs->u_end(), nurbs->v_end()));
           curve = fit_trim_curve(path, t0, t1, a, locate, point, tolerance, off_surface, domain).curve;
         }
         for (const auto& p : curve.points) uv_box.extend(Eigen::Vector2d(p.x(), p.y()));

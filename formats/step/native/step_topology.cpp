@@ -15,6 +15,19 @@ namespace cadnurbs::step {
 
 namespace {
 
+// How far a vertex may lie from its edge's curve: files keep vertices within their edges' tolerance, not
+// exactly on the curve (KiCad's QFP parts by 6e-4 mm at an uncertainty of 1e-5); the path is then
+// snapped to them.
+double vertex_tolerance(const NurbsCurve& curve) {
+  double size = 0;
+  for (const auto& p : curve.points) size = std::max(size, (p - curve.points.front()).norm());
+  return 1e-3 * (size + 1.0);
+}
+
+}  // namespace
+
+namespace {
+
 constexpr double kTurn = 2 * std::numbers::pi;
 
 // The curve over [t0, t1] of its domain (t0 < t1), cut exactly.
@@ -89,9 +102,7 @@ int TopologyReader::edge(EntityId edge_curve) {
         if (!closed && (same_sense ? !(t2 > t1) : !(t1 > t2))) {
           // The curve passes a vertex more than once (KiCad's Bourns toroids: a wire's curve with a small
           // loop, both vertices near both passes): the passes in the edge's sense nearest their vertices.
-          double size = 0;
-          for (const auto& q : curve.points) size = std::max(size, (q - curve.points.front()).norm());
-          const double within = 1e-3 * (size + 1.0);
+          const double within = vertex_tolerance(curve);
           double best = std::numeric_limits<double>::infinity();
           for (double c1 : curve_parameters_near(curve, p1, within))
             for (double c2 : curve_parameters_near(curve, p2, within)) {
@@ -109,11 +120,7 @@ int TopologyReader::edge(EntityId edge_curve) {
     }
     // The vertices must lie on the curve: they are where it is cut.
     const Eigen::Vector3d q1 = curve_point(e.path, e.path.domain_start()), q2 = curve_point(e.path, e.path.domain_end());
-    double size = 0;
-    for (const auto& p : e.path.points) size = std::max(size, (p - e.path.points.front()).norm());
-    // Files keep vertices within their edges' tolerance, not exactly on the curve (KiCad's QFP parts by
-    // 6e-4 mm at an uncertainty of 1e-5): the path is snapped to them.
-    const double tolerance = 1e-3 * (size + 1.0);
+    const double tolerance = vertex_tolerance(e.path);
     const double off = std::max((q1 - p1).norm(), (q2 - p2).norm());
     if (off > tolerance)
       context_.refuse(edge_curve, "a vertex " + message_number(off) + " mm from its curve");
