@@ -11,12 +11,15 @@
 //    onto the domain's edge. A B-spline lies in the convex hull of its control points, so the curve
 //    moves by no more than they do, and the surface is evaluated clamped at its edge anyway. Points
 //    further out (an arc's control polygon near the edge, the arc inside) are left alone. Excursions
-//    of round-off size (1e-12 of the domain) are repaired without a report line.
-// Refusals (GeometryError(entity, reason)):
-//  - a loop further outside the domain;
+//    of round-off size (1e-12 of the domain) are repaired without a report line;
 //  - a loop that crosses itself (two of its non-adjacent chords properly cross, with each NURBS piece
 //    sampled 16 and again 128 times per knot span; a crossing finer than that can be missed, and a
-//    loop that only touches itself within 1e-9 of the domain does not cross);
+//    loop that only touches itself within 1e-9 of the domain does not cross) where the lobe on one side
+//    of the crossing bounds at most a tenth of the other's area: that lobe is cut off (core/
+//    loop_self_crossing), up to 8 lobes a loop. The face changes by the lobe's area, reported as a share.
+// Refusals (GeometryError(entity, reason)):
+//  - a loop further outside the domain;
+//  - a loop that crosses itself with larger lobes (a bow tie);
 //  - a face all of whose loops bound no area.
 #include <string>
 #include <vector>

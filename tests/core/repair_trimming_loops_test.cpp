@@ -4,6 +4,7 @@
 
 #include "core/geometry_error.hpp"
 #include "core/nurbs_surface.hpp"
+#include "core/polygon_2d.hpp"
 #include "core/repair_trimming_loops.hpp"
 
 using namespace cadnurbs;
@@ -142,7 +143,71 @@ TEST(RepairTrimmingLoops, ALoopCrossingItselfIsRefused) {
   TrimmedSurface t = dome();
   // A figure of eight: (0.2,0.2) -> (0.8,0.8) crosses (0.8,0.2) -> (0.2,0.8).
   t.loops.push_back(polyline_loop({{0.2, 0.2}, {0.8, 0.8}, {0.8, 0.3}, {0.2, 0.8}}));
-  EXPECT_EQ(refusal(t), "face 7: trimming loop 0 crosses itself");
+  EXPECT_EQ(refusal(t),
+            "face 7: trimming loop 0 crosses itself (its smaller lobe bounds 0.694 of the larger's area; lobes up to "
+            "0.1 are cut off)");
+}
+
+TEST(RepairTrimmingLoops, ASmallCurlOfAPolylineIsCutOff) {
+  TrimmedSurface t = dome();
+  // A square whose bottom side curls round a 0.02 square at (0.5, 0.2) and goes on 0.02 lower.
+  t.loops.push_back(polyline_loop({{0.2, 0.2},
+                                   {0.52, 0.2},
+                                   {0.52, 0.22},
+                                   {0.5, 0.22},
+                                   {0.5, 0.18},
+                                   {0.8, 0.18},
+                                   {0.8, 0.8},
+                                   {0.2, 0.8}}));
+  const auto done = repair_trimming_loops(t, "face 7");
+  ASSERT_EQ(done.size(), 1u);
+  EXPECT_EQ(done[0], "trimming loop 0 crossed itself at (0.5, 0.2): a lobe of 0.00109 of its area cut off");
+  // 0.6 x 0.6 and the 0.3 x 0.02 strip below, the 0.02 x 0.02 curl gone.
+  EXPECT_NEAR(loop_signed_area(t.loops[0]), 0.366, 1e-14);
+  EXPECT_TRUE(repair_trimming_loops(t, "face 7").empty());
+}
+
+TEST(RepairTrimmingLoops, TheLoopOfANodalCubicIsCutOffAtItsNode) {
+  // x = t^2 - 1, y = t (t^2 - 1) over t in [-1.3, 1.3] as one cubic Bezier, scaled by 0.01: it passes
+  // its node (0, 0) at t = -1 and t = 1, and the loop between bounds 8/15 (times 1e-4) counter-clockwise,
+  // while the rest of the loop runs clockwise.
+  const double a = -1.3, b = 1.3, scale = 0.01;
+  auto c = [&](double t) { return Eigen::Vector3d(scale * (t * t - 1), scale * t * (t * t - 1), 0); };
+  auto dc = [&](double t) { return Eigen::Vector3d(scale * 2 * t, scale * (3 * t * t - 1), 0); };
+  NurbsCurve cubic;
+  cubic.dimension = 2;
+  cubic.order = 4;
+  cubic.knots = {a, a, a, a, b, b, b, b};
+  cubic.points = {c(a), c(a) + (b - a) / 3 * dc(a), c(b) - (b - a) / 3 * dc(b), c(b)};
+  TrimmedSurface t = dome();
+  const Eigen::Vector2d shift(0.3, 0.5);
+  for (auto& p : cubic.points) p.head<2>() += shift;
+  TrimLoop loop;
+  loop.segments.emplace_back(cubic);
+  // Closed by a rectangle to the right, 0.6 long.
+  const Eigen::Vector2d end = c(b).head<2>() + shift, start = c(a).head<2>() + shift;
+  loop.segments.emplace_back(Polyline2D{{end, {0.9, end.y()}, {0.9, start.y()}, start}});
+  loop.edges = {{3, false}, {4, true}};
+  t.loops.push_back(loop);
+  auto area = [](const TrimLoop& l) { return polygon_signed_area(loop_polygon(l, 4096)); };
+  const double before = area(t.loops[0]);
+  const auto done = repair_trimming_loops(t, "face 7");
+  ASSERT_EQ(done.size(), 1u);
+  EXPECT_EQ(done[0].rfind("trimming loop 0 crossed itself at (0.3, 0.5): a lobe of ", 0), 0u) << done[0];
+  const TrimLoop& cut = t.loops[0];
+  // The cubic's two outer pieces, split at t = -1 and t = 1, and the rectangle.
+  ASSERT_EQ(cut.segments.size(), 3u);
+  const auto& first = std::get<NurbsCurve>(cut.segments[0]);
+  const auto& second = std::get<NurbsCurve>(cut.segments[1]);
+  EXPECT_NEAR(first.domain_end(), -1.0, 1e-12);
+  EXPECT_NEAR(second.domain_start(), 1.0, 1e-12);
+  EXPECT_EQ(first.points.back(), second.points.front());
+  EXPECT_LT((first.points.back().head<2>() - shift).norm(), 1e-15);
+  // The cut pieces no longer share the edge; the untouched rectangle does.
+  EXPECT_EQ(cut.edges, (std::vector<TrimEdgeRef>{{}, {}, {4, true}}));
+  // The lobe's 8/15 (scaled) is what the loop lost, to the 1e-6 of its area that 4096 samples per span
+  // leave.
+  EXPECT_NEAR(before - area(cut), 8.0 / 15 * scale * scale, 1e-6 * 8.0 / 15 * scale * scale);
 }
 
 TEST(RepairTrimmingLoops, ALoopTouchingItselfAtAPoleIsNotACrossing) {

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <unordered_set>
 
 #include "core/geometry_error.hpp"
 #include "core/length_unit.hpp"
+#include "core/number_format.hpp"
 #include "core/repair_trimming_loops.hpp"
 #include "formats/step/native/native_face.hpp"
 #include "formats/step/native/step_assembly.hpp"
@@ -213,8 +215,16 @@ class SceneBuilder {
         try {
           const double size = std::max(face_size(face, topology_.edges()), 1e-6);
           TrimmedSurface trimmed = native_face(face, topology_.edges(), 1e-7 * size);
-          for (auto& line : repair_trimming_loops(trimmed, "face"))
-            content.repairs.emplace_back(child_path, shape.source_entity + " (" + shape.source_type + "): " + line);
+          const std::string said = shape.source_entity + " (" + shape.source_type + "): ";
+          for (const StepBound& bound : face.bounds)
+            for (const EdgeUse& use : bound.uses) {
+              const StepEdge& edge = topology_.edges()[use.edge];
+              if (edge.vertex_moved > 0 && moves_said_.insert(use.edge).second)
+                content.repairs.emplace_back(child_path, said + context_.model.entity_text(edge.entity) + ": a vertex " +
+                                                             message_number(edge.vertex_moved) +
+                                                             " mm off the curve: its end moved onto it");
+            }
+          for (auto& line : repair_trimming_loops(trimmed, "face")) content.repairs.emplace_back(child_path, said + line);
           shape.geometry = std::move(trimmed);
         } catch (const GeometryError& error) {
           context_.refuse(entity, error.reason());
@@ -230,6 +240,7 @@ class SceneBuilder {
   std::unordered_map<EntityId, Colour> colours_;
   TopologyReader topology_;
   std::unordered_map<std::size_t, PartContent> parts_;
+  std::unordered_set<int> moves_said_;  // edges whose moved vertex was said
 };
 
 // The scene node of product `p` (an assembly's components below it, a part's content in it).
@@ -265,6 +276,7 @@ BrepTranslation read_step_native(std::string_view bytes, const std::string& path
   const part21::Model model = part21::parse_part21(bytes, path);
   const StepTypes types(model);
   StepContext context{model, types};
+  context.points_size = cartesian_points_size(context);
   StepProductTree tree = read_product_tree(context);
   const std::string stem = std::filesystem::path(path).stem().string();
 

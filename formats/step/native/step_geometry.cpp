@@ -1,6 +1,7 @@
 #include "formats/step/native/step_geometry.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/conic_curves.hpp"
@@ -183,6 +184,21 @@ Eigen::Vector3d read_point(const StepContext& context, EntityId point) {
     const auto& r = context.record(point, context.types.cartesian_point, "a CARTESIAN_POINT");
     return triple(context.model.parameter(r, 1), context.millimetres);
   });
+}
+
+double cartesian_points_size(const StepContext& context) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (EntityId point : context.model.of_type(context.types.cartesian_point)) {
+    try {
+      const Value coordinates = context.model.parameter(*context.model.record(point, context.types.cartesian_point), 1);
+      if (coordinates.size() != 3) continue;
+      const Eigen::Vector3d p = triple(coordinates, 1.0);
+      if (!p.allFinite()) continue;
+      lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    } catch (const part21::ValueError&) {
+    }
+  }
+  return lo.x() <= hi.x() ? (hi - lo).norm() : 0.0;
 }
 
 Eigen::Vector3d read_direction(const StepContext& context, EntityId direction) {

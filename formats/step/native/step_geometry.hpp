@@ -34,6 +34,10 @@ Eigen::Vector3d read_point(const StepContext& context, EntityId point);         
 Eigen::Vector3d read_direction(const StepContext& context, EntityId direction);  // DIRECTION, not normalised
 AxisFrame read_frame(const StepContext& context, EntityId placement);            // AXIS2_PLACEMENT_3D
 
+// Diagonal of the box of every 3D CARTESIAN_POINT in the file, in file units (0: none); points that do not
+// read are left out (reading them where they are used refuses them).
+double cartesian_points_size(const StepContext& context);
+
 // LINE, CIRCLE, ELLIPSE, B_SPLINE_CURVE_WITH_KNOTS (rational as a complex instance); SURFACE_CURVE and
 // SEAM_CURVE as their 3D curve (their pcurves are not used: the builder computes its own).
 StepCurve read_curve(const StepContext& context, EntityId curve);

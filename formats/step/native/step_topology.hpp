@@ -2,9 +2,13 @@
 // STEP's B-rep topology (ISO 10303-42: faces, bounds, loops, oriented edges, edges, vertices) read into
 // plain structures: each EDGE_CURVE once, numbered, with its trimmed 3D curve; each face with its surface
 // and its bounds as chains of edge uses.
-// Refuses (OutsideNativeSubset naming the entity): a vertex farther from its edge's curve than 1e-6 of the
-// curve's size (plus 1e-7 mm) — the vertices trim the curve, so they must lie on it; an edge whose vertices
-// run against its curve's sense; topology types outside the subset.
+// The vertices trim their edge's curve, so they must lie on it: the curve is cut at the points nearest
+// them and its ends moved onto them. Files keep vertices within their edges' tolerance, not on the curve:
+// up to 1e-3 of the curve's size plus 1e-3 mm is taken as that tolerance; a vertex farther off, up to 1e-3
+// of the file's size (StepContext::points_size, the default deviation's share), is moved onto too and
+// said (StepEdge::vertex_moved).
+// Refuses (OutsideNativeSubset naming the entity): a vertex farther from its edge's curve than both; an
+// edge whose vertices run against its curve's sense; topology types outside the subset.
 #include <Eigen/Core>
 #include <unordered_map>
 #include <vector>
@@ -19,6 +23,7 @@ struct StepEdge {
   StepCurve curve;
   Eigen::Vector3d start, end;  // the vertices' points
   NurbsCurve path;             // the edge's 3D curve from start to end (clamped; exactly through both)
+  double vertex_moved = 0;     // > 0: how far (mm) an end was moved onto its vertex, beyond the edge's tolerance
 };
 
 struct EdgeUse {

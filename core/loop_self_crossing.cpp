@@ -1,0 +1,198 @@
+#include "core/loop_self_crossing.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/polygon_2d.hpp"
+#include "core/split_curve.hpp"
+#include "core/trim_segment_parameters.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+// Where each chord of the sampled loop lies: from point k to the next, on segment `segment` over
+// [t, t_next].
+struct ChordSource {
+  int segment;
+  double t, t_next;
+};
+
+void sample_loop(const TrimLoop& loop, int samples_per_span, std::vector<Eigen::Vector2d>& points,
+                 std::vector<ChordSource>& sources) {
+  for (size_t k = 0; k < loop.segments.size(); ++k) {
+    const int segment = static_cast<int>(k);
+    if (const auto* c = std::get_if<NurbsCurve>(&loop.segments[k])) {
+      for (int i = c->order - 1; i < c->count(); ++i) {
+        const double a = c->knots[i], b = c->knots[i + 1];
+        if (!(a < b)) continue;
+        for (int s = 0; s < samples_per_span; ++s) {
+          const double t = a + (b - a) * s / samples_per_span;
+          const double next = s + 1 == samples_per_span ? b : a + (b - a) * (s + 1) / samples_per_span;
+          points.push_back(curve_point(*c, t).head<2>());
+          sources.push_back({segment, t, next});
+        }
+      }
+    } else {
+      const auto& line = std::get<Polyline2D>(loop.segments[k]).points;
+      for (size_t i = 0; i + 1 < line.size(); ++i) {
+        points.push_back(line[i]);
+        sources.push_back({segment, double(i), double(i + 1)});
+      }
+    }
+  }
+}
+
+double orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
+// The first pair (i < j) of non-adjacent chords of the closed polygon that properly cross, by more
+// than `tolerance`. Chords sorted by their smallest u and swept, so only chords whose u ranges overlap
+// are compared. Zero-length chords (a pole's degenerate piece) cross nothing.
+std::optional<std::pair<size_t, size_t>> crossing_chords(const std::vector<Eigen::Vector2d>& poly, double tolerance) {
+  const size_t n = poly.size();
+  if (n < 4) return std::nullopt;
+  auto lo = [&](size_t i) { return std::min(poly[i].x(), poly[(i + 1) % n].x()); };
+  auto hi = [&](size_t i) { return std::max(poly[i].x(), poly[(i + 1) % n].x()); };
+  std::vector<size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return lo(a) < lo(b); });
+  std::vector<size_t> active;
+  for (size_t i : order) {
+    const Eigen::Vector2d &a = poly[i], &b = poly[(i + 1) % n];
+    if (a == b) continue;
+    const double start = lo(i);
+    active.erase(std::remove_if(active.begin(), active.end(), [&](size_t j) { return hi(j) < start; }), active.end());
+    for (size_t j : active) {
+      if ((i + 1) % n == j || (j + 1) % n == i) continue;
+      const Eigen::Vector2d &c = poly[j], &d = poly[(j + 1) % n];
+      // Orientations are distances from the line times the chord's length.
+      const double ab = (b - a).norm() * tolerance, cd = (d - c).norm() * tolerance;
+      const double o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+      const double o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+      if (((o1 > ab && o2 < -ab) || (o1 < -ab && o2 > ab)) && ((o3 > cd && o4 < -cd) || (o3 < -cd && o4 > cd)))
+        return std::make_pair(std::min(i, j), std::max(i, j));
+    }
+    active.push_back(i);
+  }
+  return std::nullopt;
+}
+
+// The part of a segment over [t0, t1] (within its range; t0 < t1).
+TrimSegment segment_piece(const TrimSegment& segment, double t0, double t1) {
+  if (const auto* c = std::get_if<NurbsCurve>(&segment)) {
+    NurbsCurve piece = *c;
+    if (t1 < piece.domain_end()) piece = split_curve(piece, t1).first;
+    if (t0 > piece.domain_start()) piece = split_curve(piece, t0).second;
+    return piece;
+  }
+  const auto& points = std::get<Polyline2D>(segment).points;
+  Polyline2D piece;
+  piece.points.push_back(segment_uv(segment, t0));
+  for (size_t i = static_cast<size_t>(std::floor(t0)) + 1; double(i) < t1; ++i) piece.points.push_back(points[i]);
+  piece.points.push_back(segment_uv(segment, t1));
+  return piece;
+}
+
+void set_start(TrimSegment& segment, const Eigen::Vector2d& p) {
+  if (auto* c = std::get_if<NurbsCurve>(&segment)) c->points.front().head<2>() = p;
+  else std::get<Polyline2D>(segment).points.front() = p;
+}
+
+void set_end(TrimSegment& segment, const Eigen::Vector2d& p) {
+  if (auto* c = std::get_if<NurbsCurve>(&segment)) c->points.back().head<2>() = p;
+  else std::get<Polyline2D>(segment).points.back() = p;
+}
+
+}  // namespace
+
+bool polygon_crosses_itself(const std::vector<Eigen::Vector2d>& polygon, double tolerance) {
+  return crossing_chords(polygon, tolerance).has_value();
+}
+
+std::optional<LoopSelfCrossing> find_self_crossing(const TrimLoop& loop, int samples_per_span, double tolerance) {
+  std::vector<Eigen::Vector2d> points;
+  std::vector<ChordSource> sources;
+  sample_loop(loop, samples_per_span, points, sources);
+  const auto pair = crossing_chords(points, tolerance);
+  if (!pair) return std::nullopt;
+  const size_t n = points.size();
+  const auto [i, j] = *pair;
+  const ChordSource &ci = sources[i], &cj = sources[j];
+  // The chords' crossing: a + s (b - a) = c + r (d - c).
+  const Eigen::Vector2d a = points[i], b = points[(i + 1) % n], c = points[j], d = points[(j + 1) % n];
+  Eigen::Matrix2d m;
+  m << b - a, c - d;
+  const Eigen::Vector2d sr = m.colPivHouseholderQr().solve(c - a);
+  LoopSelfCrossing x;
+  x.first = ci.segment;
+  x.second = cj.segment;
+  x.first_t = ci.t + std::clamp(sr.x(), 0.0, 1.0) * (ci.t_next - ci.t);
+  x.second_t = cj.t + std::clamp(sr.y(), 0.0, 1.0) * (cj.t_next - cj.t);
+  // Newton on the curves, kept only while it stays on the two chords' pieces and closes the gap.
+  const TrimSegment &sa = loop.segments[x.first], &sb = loop.segments[x.second];
+  double ta = x.first_t, tb = x.second_t;
+  double gap = (segment_uv(sa, ta) - segment_uv(sb, tb)).norm();
+  for (int iteration = 0; iteration < 20 && gap > 0; ++iteration) {
+    Eigen::Matrix2d jacobian;
+    jacobian << segment_tangent(sa, ta), -segment_tangent(sb, tb);
+    const Eigen::Vector2d step = jacobian.colPivHouseholderQr().solve(segment_uv(sa, ta) - segment_uv(sb, tb));
+    const double na = ta - step.x(), nb = tb - step.y();
+    if (!(na >= ci.t && na <= ci.t_next && nb >= cj.t && nb <= cj.t_next)) break;
+    const double next_gap = (segment_uv(sa, na) - segment_uv(sb, nb)).norm();
+    if (!(next_gap < gap)) break;
+    ta = na, tb = nb, gap = next_gap;
+  }
+  x.first_t = ta, x.second_t = tb;
+  x.point = 0.5 * (segment_uv(sa, ta) + segment_uv(sb, tb));
+  std::vector<Eigen::Vector2d> between{x.point}, outer{x.point};
+  for (size_t k = i + 1; k <= j; ++k) between.push_back(points[k]);
+  for (size_t k = j + 1; k < n + i + 1; ++k) outer.push_back(points[k % n]);
+  x.between_area = polygon_signed_area(between);
+  x.outer_area = polygon_signed_area(outer);
+  return x;
+}
+
+TrimLoop cut_lobe(const TrimLoop& loop, const LoopSelfCrossing& x, KeptLobe kept) {
+  TrimLoop out;
+  const bool refs = !loop.edges.empty();
+  auto keep = [&](int k) {
+    out.segments.push_back(loop.segments[k]);
+    if (refs) out.edges.push_back(loop.edges[k]);
+  };
+  // A piece of a cut segment; nothing when it is empty (the crossing at the segment's end).
+  auto piece = [&](int k, double t0, double t1) {
+    const TrimSegment& s = loop.segments[k];
+    const double span = segment_t1(s) - segment_t0(s);
+    if (!(t1 - t0 > 1e-12 * span)) return;
+    out.segments.push_back(segment_piece(s, t0, t1));
+    if (refs) out.edges.push_back({});
+  };
+  const TrimSegment &a = loop.segments[x.first], &b = loop.segments[x.second];
+  const int count = static_cast<int>(loop.segments.size());
+  if (kept == KeptLobe::outer) {
+    for (int k = 0; k < x.first; ++k) keep(k);
+    piece(x.first, segment_t0(a), x.first_t);
+    const size_t joint = out.segments.size();
+    piece(x.second, x.second_t, segment_t1(b));
+    for (int k = x.second + 1; k < count; ++k) keep(k);
+    // The pieces meet at the crossing point exactly.
+    if (joint > 0) set_end(out.segments[joint - 1], x.point);
+    if (joint < out.segments.size()) set_start(out.segments[joint], x.point);
+  } else {
+    if (x.first == x.second) {
+      piece(x.first, x.first_t, x.second_t);
+    } else {
+      piece(x.first, x.first_t, segment_t1(a));
+      for (int k = x.first + 1; k < x.second; ++k) keep(k);
+      piece(x.second, segment_t0(b), x.second_t);
+    }
+    if (!out.segments.empty()) set_start(out.segments.front(), x.point), set_end(out.segments.back(), x.point);
+  }
+  return out;
+}
+
+}  // namespace cadnurbs
