@@ -75,7 +75,11 @@ class XcafTranslator {
   static std::string name(const TDF_Label& label) {
     Handle(TDataStd_Name) attribute;
     if (!label.FindAttribute(TDataStd_Name::GetID(), attribute)) return {};
-    return TCollection_AsciiString(attribute->Get()).ToCString();  // UTF-8
+    std::string text = TCollection_AsciiString(attribute->Get()).ToCString();  // UTF-8
+    // ISO 10303-21: line breaks are not part of a string, but OCCT keeps the CR of a CRLF file's name
+    // broken over two lines (KiCad's toroids).
+    std::erase_if(text, [](char c) { return c == '\r' || c == '\n'; });
+    return text;
   }
 
   std::optional<Colour> colour(const TDF_Label& label) const {

@@ -4,7 +4,8 @@
 // colours, every trimmed face's area within `area_tolerance` (relative) of OCCT's face's (both by
 // trimmed_surface_area to 1e-8),
 // a certified tessellation at D = 0.01 x the diagonal within D of OCCT's exact faces (measure_deviation,
-// two-sided) and watertight on every closed solid. Failures are GoogleTest EXPECTs; one table row printed.
+// two-sided) and watertight on every closed solid wherever OCCT's scene, meshed the same way, is.
+// Failures are GoogleTest EXPECTs; one table row printed.
 #include <string>
 
 #include "formats/brep/brep_translation.hpp"

@@ -42,7 +42,11 @@ const std::map<std::string, std::string>& expected_refusals() {
 const std::map<std::string, double>& occt_area_slack() {
   // Ventilator (long tier): OCCT's areas are up to 6e-3 off; its face 11, a hexagon less a disc bounded by
   // two LINE-and-CIRCLE loops, is 0.6 % too large in OCCT's reading and exact in ours (test below).
-  static const std::map<std::string, double> table = {{"step/dm1-id-214.stp", 1e-5}, {"step/Ventilator.stp", 1e-2}};
+  // linkrods (long tier): OCCT trims its B-spline faces by the file's PCURVEs, ours by the 3D edges
+  // inverted onto the surface: the areas differ by up to 9.1e-6 (face 27, measured by `cadnurbs info`),
+  // less than face 27 and its mirror twin face 26 differ from each other in either reading (1.7e-5).
+  static const std::map<std::string, double> table = {
+      {"step/dm1-id-214.stp", 1e-5}, {"step/Ventilator.stp", 1e-2}, {"step/linkrods.step", 2e-5}};
   return table;
 }
 
