@@ -6,7 +6,10 @@
 //  (1) the 3D curve S(c(t)) lies within 0.9 D of the 3D chord (what a viewer sees at the border), and
 //  (2) the surface over the straight (u,v) chord lies within D of the 3D chord, certified like the
 //      triangles: max over the m samples + (1/8) (h/m)^2 Q(chord) with the rigorous second-derivative
-//      bound Q of surface_deviation_bound (this is exactly the mesh edge's own deviation).
+//      bound Q of surface_deviation_bound (this is exactly the mesh edge's own deviation), and
+//  (3) that sampled distance stays below 0.3 of the chord's length: however coarse D, no chord stands
+//      for an arc turning by more than about 100 degrees (a half-circle is two chords, so the two halves
+//      of a cylinder thinner than D never mesh to the same flat quad).
 // (1) has no rigorous remainder (it would need bounds on the pcurve's derivatives): with m = 8 the
 // unsampled part of a chord's sagitta is about 1/64 of it when the curvature varies less than a few
 // times over one chord; the 0.9 factor covers that (0.9 (1 + 1/64) < 0.92). A chord may span C0

@@ -157,7 +157,10 @@ INSTANTIATE_TEST_SUITE_P(Library, NativeStepLibrary,
                                            "Package_DFN_QFN.3dshapes/AMS_QFN-4-1EP_2x2mm_P0.95mm.step",
                                            "Package_DIP.3dshapes/DIP-4_W7.62mm_Socket.step",
                                            "Package_QFP.3dshapes/LQFP-32_5x5mm_P0.5mm.step",
-                                           "Resistor_THT.3dshapes/R_Box_L13.0mm_W4.0mm_P9.00mm.step"),
+                                           "Resistor_THT.3dshapes/R_Box_L13.0mm_W4.0mm_P9.00mm.step",
+                                           // leads of two half-cylinders thinner than D: each half-circle
+                                           // must stay two chords, or both halves mesh to one quad
+                                           "Resistor_THT.3dshapes/R_Axial_Power_L38.0mm_W6.4mm_P45.72mm.step"),
                          [](const auto& info) { return corpus_test_name(info.param); });
 
 // KiCad's QFP parts keep edges up to 6e-4 mm off faces 0.1 mm across. OpenCASCADE's pcurves there are
