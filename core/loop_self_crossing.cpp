@@ -20,26 +20,20 @@ struct ChordSource {
   double t, t_next;
 };
 
+// The loop sampled as loop_polygon samples it (each NURBS knot span `samples_per_span` times, polyline
+// vertices as they are), with where each chord lies.
 void sample_loop(const TrimLoop& loop, int samples_per_span, std::vector<Eigen::Vector2d>& points,
                  std::vector<ChordSource>& sources) {
   for (size_t k = 0; k < loop.segments.size(); ++k) {
-    const int segment = static_cast<int>(k);
-    if (const auto* c = std::get_if<NurbsCurve>(&loop.segments[k])) {
-      for (int i = c->order - 1; i < c->count(); ++i) {
-        const double a = c->knots[i], b = c->knots[i + 1];
-        if (!(a < b)) continue;
-        for (int s = 0; s < samples_per_span; ++s) {
-          const double t = a + (b - a) * s / samples_per_span;
-          const double next = s + 1 == samples_per_span ? b : a + (b - a) * (s + 1) / samples_per_span;
-          points.push_back(curve_point(*c, t).head<2>());
-          sources.push_back({segment, t, next});
-        }
-      }
-    } else {
-      const auto& line = std::get<Polyline2D>(loop.segments[k]).points;
-      for (size_t i = 0; i + 1 < line.size(); ++i) {
-        points.push_back(line[i]);
-        sources.push_back({segment, double(i), double(i + 1)});
+    const TrimSegment& segment = loop.segments[k];
+    const int steps = std::holds_alternative<NurbsCurve>(segment) ? samples_per_span : 1;
+    const std::vector<double> breaks = segment_breaks(segment);
+    for (size_t i = 0; i + 1 < breaks.size(); ++i) {
+      const double a = breaks[i], b = breaks[i + 1];
+      for (int s = 0; s < steps; ++s) {
+        const double t = a + (b - a) * s / steps;
+        points.push_back(segment_uv(segment, t));
+        sources.push_back({static_cast<int>(k), t, s + 1 == steps ? b : a + (b - a) * (s + 1) / steps});
       }
     }
   }
@@ -135,16 +129,16 @@ std::optional<LoopSelfCrossing> find_self_crossing(const TrimLoop& loop, int sam
   // Newton on the curves, kept only while it stays on the two chords' pieces and closes the gap.
   const TrimSegment &sa = loop.segments[x.first], &sb = loop.segments[x.second];
   double ta = x.first_t, tb = x.second_t;
-  double gap = (segment_uv(sa, ta) - segment_uv(sb, tb)).norm();
-  for (int iteration = 0; iteration < 20 && gap > 0; ++iteration) {
+  Eigen::Vector2d residual = segment_uv(sa, ta) - segment_uv(sb, tb);
+  for (int iteration = 0; iteration < 20 && residual.norm() > 0; ++iteration) {
     Eigen::Matrix2d jacobian;
     jacobian << segment_tangent(sa, ta), -segment_tangent(sb, tb);
-    const Eigen::Vector2d step = jacobian.colPivHouseholderQr().solve(segment_uv(sa, ta) - segment_uv(sb, tb));
+    const Eigen::Vector2d step = jacobian.colPivHouseholderQr().solve(residual);
     const double na = ta - step.x(), nb = tb - step.y();
     if (!(na >= ci.t && na <= ci.t_next && nb >= cj.t && nb <= cj.t_next)) break;
-    const double next_gap = (segment_uv(sa, na) - segment_uv(sb, nb)).norm();
-    if (!(next_gap < gap)) break;
-    ta = na, tb = nb, gap = next_gap;
+    const Eigen::Vector2d next = segment_uv(sa, na) - segment_uv(sb, nb);
+    if (!(next.norm() < residual.norm())) break;
+    ta = na, tb = nb, residual = next;
   }
   x.first_t = ta, x.second_t = tb;
   x.point = 0.5 * (segment_uv(sa, ta) + segment_uv(sb, tb));

@@ -276,7 +276,6 @@ BrepTranslation read_step_native(std::string_view bytes, const std::string& path
   const part21::Model model = part21::parse_part21(bytes, path);
   const StepTypes types(model);
   StepContext context{model, types};
-  context.points_size = cartesian_points_size(context);
   StepProductTree tree = read_product_tree(context);
   const std::string stem = std::filesystem::path(path).stem().string();
 

@@ -20,7 +20,6 @@ struct StepContext {
   const StepTypes& types;
   double millimetres = 1.0;  // one length unit of the file, in millimetres
   double radians = 1.0;      // one plane-angle unit of the file, in radians
-  double points_size = 0;    // diagonal of the box of the file's CARTESIAN_POINTs, in file units
 
   [[noreturn]] void refuse(EntityId entity, const std::string& reason) const {
     throw OutsideNativeSubset(model.entity_text(entity) + ": " + reason);

@@ -127,7 +127,9 @@ int TopologyReader::edge(EntityId edge_curve) {
     const double tolerance = vertex_tolerance(e.path);
     const double off = std::max((q1 - p1).norm(), (q2 - p2).norm());
     if (off > tolerance) {
-      if (!(off <= kFileShare * context_.points_size * context_.millimetres))
+      // The file's size only where needed: one more pass over its points.
+      if (!points_size_) points_size_ = cartesian_points_size(context_);
+      if (!(off <= kFileShare * *points_size_ * context_.millimetres))
         context_.refuse(edge_curve, "a vertex " + message_number(off) + " mm from its curve");
       e.vertex_moved = off;
     }

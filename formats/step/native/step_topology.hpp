@@ -5,11 +5,12 @@
 // The vertices trim their edge's curve, so they must lie on it: the curve is cut at the points nearest
 // them and its ends moved onto them. Files keep vertices within their edges' tolerance, not on the curve:
 // up to 1e-3 of the curve's size plus 1e-3 mm is taken as that tolerance; a vertex farther off, up to 1e-3
-// of the file's size (StepContext::points_size, the default deviation's share), is moved onto too and
+// of the file's size (cartesian_points_size, the default deviation's share), is moved onto too and
 // said (StepEdge::vertex_moved).
 // Refuses (OutsideNativeSubset naming the entity): a vertex farther from its edge's curve than both; an
 // edge whose vertices run against its curve's sense; topology types outside the subset.
 #include <Eigen/Core>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -61,6 +62,7 @@ class TopologyReader {
   const StepContext& context_;
   std::vector<StepEdge> edges_;
   std::unordered_map<EntityId, int> edge_index_;
+  std::optional<double> points_size_;  // cartesian_points_size, once a vertex needs it
 };
 
 }  // namespace cadnurbs::step
