@@ -4,6 +4,7 @@
 #include <map>
 
 #include "analysis/eval/sample_trim_segment.hpp"
+#include "analysis/mesh/point_hash_grid.hpp"
 #include "analysis/tessellation/domain_loop.hpp"
 #include "analysis/tessellation/shared_sample_inversion.hpp"
 #include "core/trim_segment_parameters.hpp"
@@ -48,6 +49,13 @@ CurveUse SharedEdges::use_of(int face, int loop, int segment) const {
   return {face, loop, segment, f.curve[loop][segment], static_cast<bool>(f.reversed[loop][segment])};
 }
 
+namespace {
+
+// Curve ends closer than this share of D are one model vertex (and a curve that short is one vertex).
+constexpr double kSameVertex = 1e-3;
+
+}  // namespace
+
 void SharedEdges::find_degenerate_curves() {
   // Whether every segment of a loop lies within D/2 of its start, asked once per (face, loop).
   std::map<std::pair<int, int>, bool> tiny_loops;
@@ -69,7 +77,7 @@ void SharedEdges::find_degenerate_curves() {
     // beside the neighbouring face (Ventilator.stp). A loop made only of such segments closes no
     // gap: a small hole read back from a file that names no edges (11752.stp) stays a hole.
     const bool gap_closure = c.unnamed && !loop_is_tiny(u.face, u.loop);
-    c.degenerate = is_degenerate_segment(*faces_[u.face].eval, segment(u), (gap_closure ? 0.5 : 1e-3) * d_);
+    c.degenerate = is_degenerate_segment(*faces_[u.face].eval, segment(u), (gap_closure ? 0.5 : kSameVertex) * d_);
   }
 }
 
@@ -87,6 +95,29 @@ void SharedEdges::join_vertices() {
         const CurveUse b = use_of(static_cast<int>(fi), static_cast<int>(l), (k + 1) % n);
         classes_.join(a.end(CurveEndSide::end), b.end(CurveEndSide::start));
       }
+    }
+  }
+  // A face's loops may reach one point from two classes: where an inner loop touches the outer loop at
+  // a vertex, two nodes a few bits apart would leave the mesh open there (LED_D3.0mm_Horizontal: the lens
+  // cylinder tangent to the cut plane). Corners of one face within kSameVertex of D, as curves that short
+  // are, are one vertex. Faces that only touch are not joined: their edges say whether they meet.
+  for (size_t fi = 0; fi < faces_.size(); ++fi) {
+    const Face& f = faces_[fi];
+    std::vector<std::pair<CurveEnd, Eigen::Vector3d>> corners;
+    for (size_t l = 0; l < f.loops.size(); ++l)
+      for (size_t k = 0; k < f.loops[l].segments.size(); ++k) {
+        const CurveUse u = use_of(static_cast<int>(fi), static_cast<int>(l), static_cast<int>(k));
+        const Eigen::Vector2d uv = segment_start(segment(u));
+        corners.emplace_back(u.end(CurveEndSide::start), f.eval->point(uv.x(), uv.y()));
+      }
+    const double same = kSameVertex * d_;
+    PointHashGrid grid(same);
+    for (size_t k = 0; k < corners.size(); ++k) {
+      grid.find_near(corners[k].second, [&](int j) {
+        if ((corners[j].second - corners[k].second).norm() <= same) classes_.join(corners[j].first, corners[k].first);
+        return false;
+      });
+      grid.insert(corners[k].second, static_cast<int>(k));
     }
   }
   // Node ids and positions of the vertex classes, from the first face that reaches them.

@@ -2,6 +2,7 @@
 // solid tessellates to a closed mesh (zero boundary and non-manifold edges after weld_exact).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -89,6 +90,56 @@ TEST(Watertight, CappingBodyAndLidsCloseUp) {
 // The same at D = 0.01 (long tier: its measurement alone takes about a minute).
 TEST(Watertight, CappingBodyAndLidsCloseUpAtAHundredthOfAMillimetre) {
   expect_capping_closes_up("capping-90", {0.01, 0.1});
+}
+
+// A square face F whose hole, a triangle, touches its outer loop at (1,0), and the triangle's own face G
+// on a plane parametrised at an angle, so that G evaluates that vertex a few bits away from (1,0,0). The
+// loops reach the vertex from two vertex classes (F's outer edges, the triangle's edges): they must
+// still be one mesh node, or F's hole chords and G's differ there and the mesh opens (the lens of
+// LED_D3.0mm_Horizontal, where a cylinder is tangent to a cut plane). Welded, F and G are one square:
+// its only boundary is the square's perimeter, 8.
+TEST(Watertight, InnerLoopTouchingOuterLoopSharesTheVertex) {
+  auto line = [](Eigen::Vector2d a, Eigen::Vector2d b) {
+    NurbsCurve c;
+    c.dimension = 2;
+    c.order = 2;
+    c.points = {Eigen::Vector3d(a.x(), a.y(), 0), Eigen::Vector3d(b.x(), b.y(), 0)};
+    c.knots = {0, 0, 1, 1};
+    return c;
+  };
+  auto loop = [&](const std::vector<Eigen::Vector2d>& corners, const std::vector<TrimEdgeRef>& edges) {
+    TrimLoop l;
+    for (size_t i = 0; i < corners.size(); ++i) l.segments.emplace_back(line(corners[i], corners[(i + 1) % corners.size()]));
+    l.edges = edges;
+    return l;
+  };
+  const double angle = 0.3, c = std::cos(angle), s = std::sin(angle);
+  const Eigen::Vector3d a(c, s, 0), b(-s, c, 0);  // G's u and v directions
+  auto uv_on_g = [&](double x, double y) { return Eigen::Vector2d(x * c + y * s, -x * s + y * c); };
+  TrimmedSurface g;
+  g.surface.u_count = g.surface.v_count = 2;
+  g.surface.u_knots = g.surface.v_knots = {-3, -3, 3, 3};
+  g.surface.points = {-3 * a - 3 * b, 3 * a - 3 * b, -3 * a + 3 * b, 3 * a + 3 * b};
+  g.loops.push_back(loop({uv_on_g(1, 0), uv_on_g(1.5, 1), uv_on_g(0.5, 1)}, {{7, true}, {6, true}, {5, true}}));
+  ASSERT_NE((surface_point(g.surface, uv_on_g(1, 0).x(), uv_on_g(1, 0).y()) - Eigen::Vector3d(1, 0, 0)).norm(), 0.0)
+      << "G must evaluate the vertex off (1,0,0) for this test to mean anything";
+  TrimmedSurface f;
+  f.surface.u_count = f.surface.v_count = 2;
+  f.surface.u_knots = f.surface.v_knots = {0, 0, 2, 2};
+  f.surface.points = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {2, 2, 0}};
+  f.loops.push_back(loop({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}}, {{0, false}, {1, false}, {2, false}, {3, false}, {4, false}}));
+  f.loops.push_back(loop({{1, 0}, {0.5, 1}, {1.5, 1}}, {{5, false}, {6, false}, {7, false}}));
+  Scene scene;
+  scene.root.shapes.push_back({"G", g, std::nullopt});  // first: G places the triangle's vertex
+  scene.root.shapes.push_back({"F", f, std::nullopt});
+  for (double d : {0.1, 0.01}) {
+    TessellationReport report;
+    const TriangleMesh mesh = weld_exact(node_mesh(tessellate_to_deviation(scene, d, &report)));
+    const EdgeCounts e = count_boundary_edges(mesh);
+    EXPECT_NEAR(e.boundary_length, 8.0, 1e-12) << "D=" << d;
+    EXPECT_EQ(e.non_manifold, 0) << "D=" << d;
+    EXPECT_EQ(report.unshared_edge_uses, 0) << "D=" << d;
+  }
 }
 
 TEST(Watertight, WeldExactMergesOnlyIdenticalPositions) {

@@ -160,7 +160,10 @@ INSTANTIATE_TEST_SUITE_P(Library, NativeStepLibrary,
                                            "Resistor_THT.3dshapes/R_Box_L13.0mm_W4.0mm_P9.00mm.step",
                                            // leads of two half-cylinders thinner than D: each half-circle
                                            // must stay two chords, or both halves mesh to one quad
-                                           "Resistor_THT.3dshapes/R_Axial_Power_L38.0mm_W6.4mm_P45.72mm.step"),
+                                           "Resistor_THT.3dshapes/R_Axial_Power_L38.0mm_W6.4mm_P45.72mm.step",
+                                           // a lens cylinder tangent to the cut plane: the plane's hole
+                                           // touches its outer loop at a vertex (one mesh node)
+                                           "LED_THT.3dshapes/LED_D3.0mm_Horizontal_O1.27mm_Z2.0mm.step"),
                          [](const auto& info) { return corpus_test_name(info.param); });
 
 // KiCad's QFP parts keep edges up to 6e-4 mm off faces 0.1 mm across. OpenCASCADE's pcurves there are
