@@ -30,6 +30,20 @@ int drop_curves(SceneNode& node) {
   return dropped;
 }
 
+bool holds_geometry(const SceneCounts& c) {
+  return c.surfaces + c.trimmed_surfaces + c.curves + c.meshes + c.polygon_meshes > 0;
+}
+
+// A file without geometry is never written: the conversion fails, naming what the input held and why
+// none of it is there (the reader's first note or repair line, and how many more it gave).
+void refuse_empty(const std::string& input, const BrepTranslation& loaded, const std::string& what) {
+  std::vector<std::string> lines = loaded.notes;
+  lines.insert(lines.end(), loaded.repairs.begin(), loaded.repairs.end());
+  std::string why = lines.empty() ? "the file holds none that cadnurbs reads" : lines.front();
+  if (lines.size() > 1) why += "; " + std::to_string(lines.size() - 1) + " more such line" + (lines.size() > 2 ? "s" : "");
+  throw FileError(input + ": " + what + " (" + why + ")");
+}
+
 template <class Function, class... Args>
 void tell(const Function& listener, const Args&... args) {
   if (listener) listener(args...);
@@ -76,6 +90,7 @@ SceneWriteOptions scene_write_options(const ConversionRequest& request, const Sc
 ConversionResult convert_loaded(const ConversionRequest& request, const LoadedInput& input, const ConversionLog& log) {
   const FileFormat& format = output_format(request.output);
   const Scene& scene = input.scene;
+  if (!holds_geometry(count_entities(scene))) refuse_empty(request.input, input.loaded, "no geometry to write");
   const double diagonal = checked_diagonal(scene, request.input);
   const bool mesh = writes_mesh(request, format);
   const double tolerance = written_tolerance(scene, request.precision);
@@ -141,6 +156,9 @@ ConversionResult convert_loaded(const ConversionRequest& request, const LoadedIn
   if (format.meshes_only) {
     const int curves = drop_curves(written.root);
     if (curves > 0) tell(log.curves_dropped, curves);
+    if (!holds_geometry(count_entities(written)))
+      throw FileError(request.input + ": no geometry to write: its " + std::to_string(curves) +
+                      " curves have no place in " + file_extension(request.output));
   }
   write_scene(request.output, written, options);
   result.counts = count_entities(written);
