@@ -216,13 +216,13 @@ std::optional<VrmlTextForm> vrml_text_form(const FileFormat& format) {
 const std::vector<FileFormat>& file_formats() {
   using E = VrmlEncoding;
   static const std::vector<FileFormat> formats = {
-      {"VRML97 with the blaxxun NURBS nodes", {".wrl"}, false, true, true, read_any_vrml, write_as_vrml<E::vrml97, false>},
-      {"VRML97, gzip'd", {".wrz", ".wrl.gz"}, false, true, false, read_any_vrml, write_as_vrml<E::vrml97, true>},
-      {"X3D classic", {".x3dv"}, false, true, true, read_any_vrml, write_as_vrml<E::x3d_classic, false>},
+      {"VRML97 with the blaxxun NURBS nodes", {".wrl"}, false, true, true, read_any_vrml, write_as_vrml<E::vrml97, false>, false, LoopsOutsideDomain::cut},
+      {"VRML97, gzip'd", {".wrz", ".wrl.gz"}, false, true, false, read_any_vrml, write_as_vrml<E::vrml97, true>, false, LoopsOutsideDomain::cut},
+      {"X3D classic", {".x3dv"}, false, true, true, read_any_vrml, write_as_vrml<E::x3d_classic, false>, false, LoopsOutsideDomain::cut},
       {"X3D classic, gzip'd", {".x3dvz", ".x3dv.gz"}, false, true, false, read_any_vrml,
-       write_as_vrml<E::x3d_classic, true>},
-      {"X3D XML", {".x3d"}, false, true, true, read_any_vrml, write_as_vrml<E::x3d_xml, false>},
-      {"X3D XML, gzip'd", {".x3dz", ".x3d.gz"}, false, true, false, read_any_vrml, write_as_vrml<E::x3d_xml, true>},
+       write_as_vrml<E::x3d_classic, true>, false, LoopsOutsideDomain::cut},
+      {"X3D XML", {".x3d"}, false, true, true, read_any_vrml, write_as_vrml<E::x3d_xml, false>, false, LoopsOutsideDomain::cut},
+      {"X3D XML, gzip'd", {".x3dz", ".x3d.gz"}, false, true, false, read_any_vrml, write_as_vrml<E::x3d_xml, true>, false, LoopsOutsideDomain::cut},
       {"STL (ASCII or binary in, binary out)", {".stl"}, true, false, true, read_mesh_stl, write_as_stl},
       {"PLY (binary)", {".ply"}, true, false, false, nullptr, write_as_ply},
       {"Wavefront OBJ", {".obj"}, true, false, false, nullptr, write_as_obj},
@@ -293,7 +293,7 @@ BrepTranslation load_scene_as(const std::string& path, const FileFormat& format,
   // passed it already, face by face, where a refused face can still be meshed by OCCT.
   if (loaded.face_count == 0) {
     try {
-      for (auto& line : repair_trimming_loops(loaded.scene)) loaded.repairs.push_back(std::move(line));
+      for (auto& line : repair_trimming_loops(loaded.scene, format.loops_outside_domain)) loaded.repairs.push_back(std::move(line));
     } catch (const GeometryError& e) {
       throw FileError(path + ": " + e.what());  // the message names the input, as every reader's does
     }

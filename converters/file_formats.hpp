@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "converters/walled_read.hpp"
+#include "core/repair_trimming_loops.hpp"
 #include "core/scene.hpp"
 #include "formats/brep/brep_translation.hpp"
 #include "formats/vrml/vrml_write_options.hpp"
@@ -45,6 +46,8 @@ struct FileFormat {
   BrepTranslation (*read)(const std::string& path, const SceneReadOptions& options) = nullptr;
   void (*write)(const std::string& path, const Scene& scene, const SceneWriteOptions& options) = nullptr;
   bool quantises = false;  // its writer moves positions (SceneWriteOptions::quantisation_budget)
+  // What its trimming loops far outside a surface's domain mean: a fault, or GLU's rule (VRML/X3D).
+  LoopsOutsideDomain loops_outside_domain = LoopsOutsideDomain::refuse;
 };
 
 // Every format, inputs and outputs.

@@ -6,7 +6,7 @@
 #include <numeric>
 
 #include "core/polygon_2d.hpp"
-#include "core/split_curve.hpp"
+#include "core/segment_piece.hpp"
 #include "core/trim_segment_parameters.hpp"
 
 namespace cadnurbs {
@@ -73,32 +73,6 @@ std::optional<std::pair<size_t, size_t>> crossing_chords(const std::vector<Eigen
     active.push_back(i);
   }
   return std::nullopt;
-}
-
-// The part of a segment over [t0, t1] (within its range; t0 < t1).
-TrimSegment segment_piece(const TrimSegment& segment, double t0, double t1) {
-  if (const auto* c = std::get_if<NurbsCurve>(&segment)) {
-    NurbsCurve piece = *c;
-    if (t1 < piece.domain_end()) piece = split_curve(piece, t1).first;
-    if (t0 > piece.domain_start()) piece = split_curve(piece, t0).second;
-    return piece;
-  }
-  const auto& points = std::get<Polyline2D>(segment).points;
-  Polyline2D piece;
-  piece.points.push_back(segment_uv(segment, t0));
-  for (size_t i = static_cast<size_t>(std::floor(t0)) + 1; double(i) < t1; ++i) piece.points.push_back(points[i]);
-  piece.points.push_back(segment_uv(segment, t1));
-  return piece;
-}
-
-void set_start(TrimSegment& segment, const Eigen::Vector2d& p) {
-  if (auto* c = std::get_if<NurbsCurve>(&segment)) c->points.front().head<2>() = p;
-  else std::get<Polyline2D>(segment).points.front() = p;
-}
-
-void set_end(TrimSegment& segment, const Eigen::Vector2d& p) {
-  if (auto* c = std::get_if<NurbsCurve>(&segment)) c->points.back().head<2>() = p;
-  else std::get<Polyline2D>(segment).points.back() = p;
 }
 
 }  // namespace
@@ -174,8 +148,8 @@ TrimLoop cut_lobe(const TrimLoop& loop, const LoopSelfCrossing& x, KeptLobe kept
     piece(x.second, x.second_t, segment_t1(b));
     for (int k = x.second + 1; k < count; ++k) keep(k);
     // The pieces meet at the crossing point exactly.
-    if (joint > 0) set_end(out.segments[joint - 1], x.point);
-    if (joint < out.segments.size()) set_start(out.segments[joint], x.point);
+    if (joint > 0) set_segment_end(out.segments[joint - 1], x.point);
+    if (joint < out.segments.size()) set_segment_start(out.segments[joint], x.point);
   } else {
     if (x.first == x.second) {
       piece(x.first, x.first_t, x.second_t);
@@ -184,7 +158,7 @@ TrimLoop cut_lobe(const TrimLoop& loop, const LoopSelfCrossing& x, KeptLobe kept
       for (int k = x.first + 1; k < x.second; ++k) keep(k);
       piece(x.second, segment_t0(b), x.second_t);
     }
-    if (!out.segments.empty()) set_start(out.segments.front(), x.point), set_end(out.segments.back(), x.point);
+    if (!out.segments.empty()) set_segment_start(out.segments.front(), x.point), set_segment_end(out.segments.back(), x.point);
   }
   return out;
 }

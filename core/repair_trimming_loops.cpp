@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include "core/clip_loop_to_domain.hpp"
 #include "core/geometry_error.hpp"
 #include "core/loop_self_crossing.hpp"
 #include "core/number_format.hpp"
@@ -53,6 +55,49 @@ void for_each_defining_point(TrimSegment& segment, Visit&& visit) {
   }
 }
 
+// Whether the surface's first and last rows of control points in u (or v) coincide, weights too: a clamped
+// surface then joins itself there, and a point a whole domain width away in that direction means the
+// same point (a periodic surface converted to a clamped one).
+bool joins_itself(const NurbsSurface& s, bool in_u) {
+  const int rows = in_u ? s.v_count : s.u_count, last = (in_u ? s.u_count : s.v_count) - 1;
+  if (last < 1 || s.points.empty()) return false;
+  Eigen::Vector3d lo = s.points.front(), hi = lo;
+  for (const auto& p : s.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const double tolerance = 1e-9 * std::max((hi - lo).norm(), 1e-300);
+  for (int r = 0; r < rows; ++r) {
+    const int i0 = in_u ? 0 : r, j0 = in_u ? r : 0, i1 = in_u ? last : r, j1 = in_u ? r : last;
+    if ((s.point(i0, j0) - s.point(i1, j1)).norm() > tolerance) return false;
+    if (std::abs(s.weight(i0, j0) - s.weight(i1, j1)) > 1e-12 * s.weight(i0, j0)) return false;
+  }
+  return true;
+}
+
+// The whole periods (domain widths) by which to move a loop whose sampled points are `polygon` so that it
+// lies in the domain (within kDomainSlack), in each direction where the surface joins itself; none when
+// no such move brings it in.
+std::optional<Eigen::Vector2d> period_shift(const NurbsSurface& s, const Domain& domain,
+                                           const std::vector<Eigen::Vector2d>& polygon) {
+  Eigen::Vector2d lo = polygon.front(), hi = lo;
+  for (const auto& p : polygon) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  Eigen::Vector2d shift(0, 0);
+  for (int axis = 0; axis < 2; ++axis) {
+    const double start = axis == 0 ? domain.u0 : domain.v0, width = axis == 0 ? domain.du() : domain.dv();
+    const double periods = std::floor((lo[axis] - start + kDomainSlack * width) / width);
+    if (periods != 0 && joins_itself(s, axis == 0)) shift[axis] = -periods * width;
+  }
+  if (shift == Eigen::Vector2d::Zero()) return std::nullopt;
+  for (const auto& p : polygon)
+    if (domain.outside(p + shift) > kDomainSlack) return std::nullopt;
+  return shift;
+}
+
+std::string periods_text(const Eigen::Vector2d& shift, const Domain& domain) {
+  std::string text;
+  if (shift.x() != 0) text += message_number(-shift.x() / domain.du()) + " in u";
+  if (shift.y() != 0) text += std::string(text.empty() ? "" : " and ") + message_number(-shift.y() / domain.dv()) + " in v";
+  return text;
+}
+
 // A polynomial bilinear patch (a plane, as readers write planes) extends exactly beyond its domain:
 // widens the domain to the box of every loop's defining points (which holds the loops: convex hull).
 // True when it widened it.
@@ -76,31 +121,32 @@ bool widen_bilinear_domain(TrimmedSurface& face) {
   return true;
 }
 
-void repair_node(SceneNode& node, const std::string& path, std::vector<std::string>& done) {
+void repair_node(SceneNode& node, const std::string& path, LoopsOutsideDomain outside, std::vector<std::string>& done) {
   for (size_t i = 0; i < node.shapes.size(); ++i) {
     Shape& shape = node.shapes[i];
     auto* face = std::get_if<TrimmedSurface>(&shape.geometry);
     if (!face) continue;
     const std::string entity =
         path + "/" + (display_name(shape).empty() ? "shape " + std::to_string(i) : display_name(shape));
-    for (const auto& line : repair_trimming_loops(*face, entity)) done.push_back(entity + ": " + line);
+    for (const auto& line : repair_trimming_loops(*face, entity, outside)) done.push_back(entity + ": " + line);
   }
   for (size_t i = 0; i < node.children.size(); ++i) {
     SceneNode& child = node.children[i];
     repair_node(child, path + "/" + (display_name(child).empty() ? "node " + std::to_string(i) : display_name(child)),
-                done);
+                outside, done);
   }
 }
 
 }  // namespace
 
-std::vector<std::string> repair_trimming_loops(Scene& scene) {
+std::vector<std::string> repair_trimming_loops(Scene& scene, LoopsOutsideDomain outside) {
   std::vector<std::string> done;
-  repair_node(scene.root, display_name(scene.root).empty() ? "scene" : display_name(scene.root), done);
+  repair_node(scene.root, display_name(scene.root).empty() ? "scene" : display_name(scene.root), outside, done);
   return done;
 }
 
-std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::string& entity) {
+std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::string& entity,
+                                               LoopsOutsideDomain outside) {
   std::vector<std::string> done;
   if (face.loops.empty()) return done;
   // Each loop is sampled once here (16 points per span) and again only where points were moved.
@@ -134,14 +180,51 @@ std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::
   }
   if (kept.empty()) throw GeometryError(entity, "every trimming loop bounds no area: the face has no area");
 
+  // Loops far outside the domain: moved back by whole periods where the surface joins itself (a seam
+  // written elsewhere, a periodic surface's loop a period away), else cut to the domain as GLU draws them.
+  {
+    std::vector<TrimLoop> placed;
+    std::vector<std::vector<Eigen::Vector2d>> placed_polygons;
+    for (size_t k = 0; k < kept.size(); ++k) {
+      const double out = excursion(domain, kept_polygons[k]);
+      if (out <= kDomainSlack) {
+        placed.push_back(std::move(kept[k]));
+        placed_polygons.push_back(std::move(kept_polygons[k]));
+        continue;
+      }
+      if (const auto shift = period_shift(s, domain, kept_polygons[k])) {
+        for (auto& segment : kept[k].segments) for_each_defining_point(segment, [&](Eigen::Vector2d& p) { p += *shift; });
+        for (auto& p : kept_polygons[k]) p += *shift;
+        done.push_back("trimming loop " + std::to_string(k) + " lay whole periods off the domain (" +
+                       periods_text(*shift, domain) + ") on a surface that joins itself there: moved back");
+        placed.push_back(std::move(kept[k]));
+        placed_polygons.push_back(std::move(kept_polygons[k]));
+        continue;
+      }
+      if (outside == LoopsOutsideDomain::refuse)
+        throw GeometryError(entity, "trimming loop " + std::to_string(k) + " leaves the surface's domain by " +
+                                        message_number(out) + " of its size (more than " +
+                                        message_number(kDomainSlack) + " cannot be moved onto it)");
+      const std::vector<TrimLoop> clipped = clip_loop_to_domain(kept[k], {domain.u0, domain.u1, domain.v0, domain.v1});
+      done.push_back("trimming loop " + std::to_string(k) + " leaves the surface's domain by " + message_number(out) +
+                     " of its size: cut to the domain, as GLU-based viewers draw it (" +
+                     (clipped.empty() ? std::string("nothing of it is inside: dropped")
+                                      : std::to_string(clipped.size()) + (clipped.size() == 1 ? " loop" : " loops") + " left") +
+                     ")");
+      for (const TrimLoop& loop : clipped) {
+        placed.push_back(loop);
+        placed_polygons.push_back(loop_polygon(loop));
+      }
+    }
+    kept = std::move(placed);
+    kept_polygons = std::move(placed_polygons);
+    if (kept.empty()) throw GeometryError(entity, "no trimming loop meets the surface's domain: the face has no area");
+  }
+
   for (size_t k = 0; k < kept.size(); ++k) {
     TrimLoop& loop = kept[k];
     std::vector<Eigen::Vector2d>& polygon = kept_polygons[k];
     const double sampled = excursion(domain, polygon);
-    if (sampled > kDomainSlack)
-      throw GeometryError(entity, "trimming loop " + std::to_string(k) + " leaves the surface's domain by " +
-                                      message_number(sampled) + " of its size (more than " +
-                                      message_number(kDomainSlack) + " cannot be moved onto it)");
     if (sampled > 0) {
       // First only points about as far out as the curve: a control point further out may belong to a
       // curve that stays inside there (an arc's control polygon near the edge).

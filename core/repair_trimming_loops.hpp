@@ -6,6 +6,9 @@
 //
 // Repairs (each reported as one line):
 //  - a loop that bounds no area (|signed area| <= 1e-12 of the domain's): dropped; it trims nothing;
+//  - a loop further out that lies whole periods away in a direction where the surface joins itself
+//    (its first and last rows of control points coincide, weights too): moved back by those periods;
+//  - with LoopsOutsideDomain::cut, any other loop further out: cut to the domain (clip_loop_to_domain);
 //  - a loop whose samples leave the surface's domain by at most kDomainSlack of its size: the points
 //    that define it (2D control points, polyline points) outside by up to twice that much are moved
 //    onto the domain's edge. A B-spline lies in the convex hull of its control points, so the curve
@@ -18,7 +21,7 @@
 //    of the crossing bounds at most a tenth of the other's area: that lobe is cut off (core/
 //    loop_self_crossing), up to 8 lobes a loop. The face changes by the lobe's area, reported as a share.
 // Refusals (GeometryError(entity, reason)):
-//  - a loop further outside the domain;
+//  - a loop further outside the domain (LoopsOutsideDomain::refuse), or no loop meeting it (cut);
 //  - a loop that crosses itself with larger lobes (a bow tie);
 //  - a face all of whose loops bound no area.
 #include <string>
@@ -33,12 +36,19 @@ namespace cadnurbs {
 // domain and still be moved onto it (11752.stp's pcurves leave a B-spline's domain by 1.5e-3).
 constexpr double kDomainSlack = 1e-2;
 
+// What a loop further outside the domain than kDomainSlack (and not whole periods away) means.
+enum class LoopsOutsideDomain {
+  refuse,  // a fault: B-rep files, whose loops are the faces' edges (STEP/IGES then mesh the face by OCCT)
+  cut,     // GLU's rule, which VRML/X3D viewers follow: only the part inside the domain is drawn
+};
+
 // Repairs `face`'s loops in place; returns what was done, one line per repair (empty: nothing).
 // Throws GeometryError(entity, reason) when the loops cannot be repaired with certainty.
-std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::string& entity);
+std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::string& entity,
+                                               LoopsOutsideDomain outside = LoopsOutsideDomain::refuse);
 
 // Every trimmed surface of the scene; lines "PATH: what was done", PATH named as validate(Scene) names
 // shapes. Throws GeometryError(PATH, reason) for the first face it cannot repair.
-std::vector<std::string> repair_trimming_loops(Scene& scene);
+std::vector<std::string> repair_trimming_loops(Scene& scene, LoopsOutsideDomain outside = LoopsOutsideDomain::refuse);
 
 }  // namespace cadnurbs

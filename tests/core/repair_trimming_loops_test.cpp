@@ -124,6 +124,50 @@ TEST(RepairTrimmingLoops, ALoopFarOutsideIsRefused) {
                         "cannot be moved onto it)");
 }
 
+// Under GLU's rule (VRML/X3D) the same loop is cut to the domain: the rectangle [0.2, 0.8] x [0, 0.5].
+TEST(RepairTrimmingLoops, UnderGlusRuleALoopFarOutsideIsCutToTheDomain) {
+  TrimmedSurface t = dome();
+  t.loops.push_back(polyline_loop({{0.2, -0.1}, {0.8, -0.1}, {0.8, 0.5}, {0.2, 0.5}}));
+  const auto done = repair_trimming_loops(t, "face 7", LoopsOutsideDomain::cut);
+  ASSERT_EQ(done.size(), 1u);
+  EXPECT_EQ(done[0], "trimming loop 0 leaves the surface's domain by 0.1 of its size: cut to the domain, as GLU-based "
+                     "viewers draw it (1 loop left)");
+  ASSERT_EQ(t.loops.size(), 1u);
+  EXPECT_NEAR(polygon_signed_area(loop_polygon(t.loops[0])), 0.3, 1e-15);
+  EXPECT_LE(worst_outside(t), 0.0);
+  // Nothing of a loop beside the domain is drawn: the face has no area.
+  TrimmedSurface beside = dome();
+  beside.loops.push_back(polyline_loop({{2, 0}, {3, 0}, {3, 1}}));
+  try {
+    repair_trimming_loops(beside, "face 7", LoopsOutsideDomain::cut);
+    ADD_FAILURE() << "no refusal";
+  } catch (const GeometryError& e) {
+    EXPECT_STREQ(e.what(), "face 7: no trimming loop meets the surface's domain: the face has no area");
+  }
+}
+
+// A surface that joins itself in u (first and last columns of control points equal): a loop one domain
+// width to the right is the same loop, moved back; on the dome, which does not join itself, it is refused.
+TEST(RepairTrimmingLoops, ALoopAPeriodAwayOnASurfaceThatJoinsItselfIsMovedBack) {
+  TrimmedSurface t;
+  NurbsSurface& s = t.surface;
+  s.u_order = 2, s.v_order = 2, s.u_count = 4, s.v_count = 2;
+  s.u_knots = {0, 0, 1, 2, 3, 3};
+  s.v_knots = {0, 0, 1, 1};
+  for (int j = 0; j < 2; ++j)
+    for (const Eigen::Vector3d& p : {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(1, 0, 0)})
+      s.points.push_back(p + Eigen::Vector3d(0, 0, j));
+  t.loops.push_back(polyline_loop({{3.5, 0.2}, {4.5, 0.2}, {4.5, 0.8}, {3.5, 0.8}}));
+  const auto done = repair_trimming_loops(t, "face 7");
+  ASSERT_EQ(done.size(), 1u);
+  EXPECT_EQ(done[0], "trimming loop 0 lay whole periods off the domain (1 in u) on a surface that joins itself there: moved back");
+  EXPECT_EQ(std::get<Polyline2D>(t.loops[0].segments[0]).points[0], Eigen::Vector2d(0.5, 0.2));
+  TrimmedSurface open = dome();
+  open.loops.push_back(polyline_loop({{1.2, 0.2}, {1.8, 0.2}, {1.8, 0.8}, {1.2, 0.8}}));
+  EXPECT_EQ(refusal(open), "face 7: trimming loop 0 leaves the surface's domain by 0.8 of its size (more than 0.01 cannot be "
+                           "moved onto it)");
+}
+
 TEST(RepairTrimmingLoops, ABilinearPatchIsWidenedExactly) {
   TrimmedSurface t = plane();
   t.loops.push_back(polyline_loop({{-0.5, 0.2}, {0.8, 0.2}, {0.8, 1.5}, {-0.5, 1.5}}));

@@ -86,7 +86,8 @@ TEST(VrmlCorpus, WhiteDunePrimitives) {
 TEST(VrmlCorpus, WhiteDuneDoor) {
   // door.x3dv (white_dune): two NurbsTrimmedSurface, 4 x 8 = 32 and 17 x 9 = 153 points. The first has
   // two Contour2D (a closed ContourPolyline2D of 5 points, a NurbsCurve2D of 9), the second one
-  // (a NurbsCurve2D of 9 points, order 4).
+  // (a NurbsCurve2D of 9 points, order 4). Read as written: the loops that leave the domains are cut
+  // to them when the file is loaded (converters' Cli test).
   const Scene scene = read_vrml(corpus + "door.x3dv");
   const SceneCounts c = count_entities(scene);
   EXPECT_EQ(c.surfaces, 2);
