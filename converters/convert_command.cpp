@@ -130,6 +130,9 @@ std::string how_meshed(const ConversionResult& result, const std::string& unit_n
          "; certified " + std::to_string(report.certified_deviation) + ", " +
          std::to_string(report.uncertified_triangles) + " uncertified triangles, " +
          std::to_string(report.unshared_edge_uses) + " unshared edge uses" +
+         (report.loops_without_area > 0
+              ? ", " + std::to_string(report.loops_without_area) + " trimming loops thinner than D not meshed"
+              : std::string()) +
          (m.check_areas ? ", " + std::to_string(report.faces_beyond_area_allowance) + " faces beyond their area allowance"
                         : std::string());
 }

@@ -55,7 +55,7 @@ class FaceMesher {
   void run() {
     us_ = f_.us;
     vs_ = f_.vs;
-    build_triangulation();
+    if (!build_triangulation()) return;  // no loop bounds area at D: the face has no triangles
     refine();
     emit();
   }
@@ -107,18 +107,26 @@ class FaceMesher {
       if (v.origin == VertexOrigin::pending) v.origin = VertexOrigin::own, v.error = Eigen::Vector3d::Zero();
   }
 
-  void build_triangulation() {
+  // False when no loop bounds any area as sampled at D: the face is then thinner than D, within D of
+  // its boundary's chords, which its neighbours' meshes hold.
+  bool build_triangulation() {
     const double su = (us_.size() - 1) / (us_.back() - us_.front());
     const double sv = (vs_.size() - 1) / (vs_.back() - vs_.front());
     dt_ = std::make_unique<DomainTriangulation>(su, sv);
     // Loops first, with degenerate runs split to the grid's resolution.
     std::vector<std::vector<Eigen::Vector2d>> polys;
-    for (const auto& loop : f_.points) {
+    for (size_t l = 0; l < f_.points.size(); ++l) {
+      const auto& loop = f_.points[l];
+      std::vector<Eigen::Vector2d> given;
+      for (const LoopPoint& p : loop) given.push_back(p.uv);
+      if (!check_loop(given, l)) {
+        ++report_.loops_without_area;
+        continue;
+      }
       std::vector<int> ids;
-      std::vector<Eigen::Vector2d> poly, given;
+      std::vector<Eigen::Vector2d> poly;
       for (size_t k = 0; k < loop.size(); ++k) {
         const LoopPoint& p = loop[k];
-        given.push_back(p.uv);
         const Eigen::Vector2d uv = inside_domain(p.uv);
         ids.push_back(add_vertex(uv, p.point, p.node));
         poly.push_back(uv);
@@ -132,11 +140,11 @@ class FaceMesher {
         }
       }
       if (ids.size() < 3) throw GeometryError(f_.name, "a trimming loop has fewer than 3 distinct points");
-      check_loop(given, polys.size());
       dt_->insert_loop(ids);
       sync_vertices();
       polys.push_back(std::move(poly));
     }
+    if (polys.empty() && !f_.points.empty()) return false;
     settle_pending();  // constraint crossings
     // Grid points inside the loops, away from them.
     PointInLoops region(polys);
@@ -169,12 +177,14 @@ class FaceMesher {
         add_vertex(uv, points_.point(uv.x(), uv.y()), std::nullopt);
       }
     }
+    return true;
   }
 
-  // Refuses loops that bound nothing or leave the surface's domain by more than 1e-2 of it. Files put
-  // pcurves a little outside (11752.stp: 1.5e-3 of a B-spline's domain); their points are moved onto
-  // the domain's edge (inside_domain), where the surface is clamped anyway.
-  void check_loop(const std::vector<Eigen::Vector2d>& poly, size_t index) const {
+  // Refuses loops that leave the surface's domain by more than 1e-2 of it. Files put pcurves a little
+  // outside (11752.stp: 1.5e-3 of a B-spline's domain); their points are moved onto the domain's edge
+  // (inside_domain), where the surface is clamped anyway. False for a loop that bounds no area as
+  // sampled at D (a sliver the reader's finer samples kept): like the repair's, it trims nothing.
+  bool check_loop(const std::vector<Eigen::Vector2d>& poly, size_t index) const {
     const double du = e_.u_end() - e_.u_start(), dv = e_.v_end() - e_.v_start();
     for (const Eigen::Vector2d& a : poly)
       if (a.x() < e_.u_start() - 1e-2 * du || a.x() > e_.u_end() + 1e-2 * du || a.y() < e_.v_start() - 1e-2 * dv ||
@@ -183,8 +193,7 @@ class FaceMesher {
                                          std::to_string(a.x()) + ", " + std::to_string(a.y()) + "), outside [" +
                                          std::to_string(e_.u_start()) + ", " + std::to_string(e_.u_end()) + "] x [" +
                                          std::to_string(e_.v_start()) + ", " + std::to_string(e_.v_end()) + "]");
-    if (std::abs(polygon_signed_area(poly)) <= 1e-12 * du * dv)
-      throw GeometryError(f_.name, "trimming loop " + std::to_string(index) + " bounds no area");
+    return std::abs(polygon_signed_area(poly)) > 1e-12 * du * dv;
   }
 
   Eigen::Vector2d inside_domain(const Eigen::Vector2d& uv) const {

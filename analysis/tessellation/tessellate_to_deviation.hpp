@@ -59,6 +59,9 @@ struct TessellationReport {
                                      // this face, or refinement stopped at 1e-9 of the domain)
   int unshared_edge_uses = 0;        // uses of a shared edge that did not match it within D (sampled
                                      // on their own: the mesh may have a crack there)
+  int loops_without_area = 0;  // loops that bound no area as sampled at D (slivers thinner than D): not
+                                // meshed, like the repair's loops of no area; a face of only such loops
+                                // has no triangles
   int faces_beyond_area_allowance = 0;  // with check_face_areas: faces whose mesh area differs from their
                                         // area by more than face_area_check allows (their triangles are
                                         // counted as uncertified too)

@@ -120,8 +120,8 @@ TEST(TessellateToDeviation, BadFaceInSceneNamesTheShape) {
   scene.root.name = "part";
   scene.root.shapes.push_back({"good", test::quarter_cylinder(10, 10), std::nullopt});
   TrimmedSurface bad = test::trimmed_square(10, 0.4, 0.1);
-  // Two distinct points only: closes, but bounds nothing.
-  bad.loops[1].segments = {Polyline2D{{{0.5, 0.5}, {0.6, 0.5}}}, Polyline2D{{{0.6, 0.5}, {0.5, 0.5}}}};
+  // A hole far outside the domain (the reader's repair would have refused it).
+  bad.loops[1].segments = {Polyline2D{{{3, 3}, {3.5, 3}, {3.5, 3.5}, {3, 3}}}};
   scene.root.shapes.push_back({"lid", bad, std::nullopt});
   try {
     tessellate_to_deviation(scene, 0.1);
@@ -129,6 +129,32 @@ TEST(TessellateToDeviation, BadFaceInSceneNamesTheShape) {
   } catch (const GeometryError& e) {
     EXPECT_NE(std::string(e.what()).find("part/lid"), std::string::npos) << e.what();
   }
+}
+
+// Loops that bound no area as sampled at D (here: two points and back, a hole and a whole face's outer
+// loop; in real files slivers that the reader's finer samples kept) trim nothing and mesh to nothing; the
+// rest of the scene meshes. Such a face used to fail the whole scene with "trimming loop 0 bounds no
+// area" where its .x3dv output was written.
+TEST(TessellateToDeviation, LoopsThinnerThanTheDeviationMeshToNothing) {
+  Scene scene;
+  scene.root.shapes.push_back({"good", test::quarter_cylinder(10, 10), std::nullopt});
+  TrimmedSurface holed = test::trimmed_square(10, 0.4, 0.1);
+  holed.loops[1].segments = {Polyline2D{{{0.5, 0.5}, {0.6, 0.5}}}, Polyline2D{{{0.6, 0.5}, {0.5, 0.5}}}};
+  scene.root.shapes.push_back({"holed", holed, std::nullopt});
+  TrimmedSurface sliver = test::trimmed_square(10, 0.4, 0.1);
+  sliver.loops = {TrimLoop{{Polyline2D{{{0.2, 0.5}, {0.8, 0.5}}}, Polyline2D{{{0.8, 0.5}, {0.2, 0.5}}}}, {}}};
+  scene.root.shapes.push_back({"sliver", sliver, std::nullopt});
+  TessellationReport report;
+  const Scene meshed = tessellate_to_deviation(scene, 0.01, &report);
+  EXPECT_EQ(report.loops_without_area, 2);
+  EXPECT_EQ(report.uncertified_triangles, 0);
+  EXPECT_GT(std::get<TriangleMesh>(meshed.root.shapes[0].geometry).triangles.size(), 0u);
+  // The holed face is the whole annulus: its hole of no area trims nothing.
+  const TriangleMesh& annulus = std::get<TriangleMesh>(meshed.root.shapes[1].geometry);
+  EXPECT_GT(annulus.triangles.size(), 0u);
+  const double pi = 3.14159265358979323846, exact = pi * 16;  // a disc of radius 0.4 x 10
+  EXPECT_NEAR(mesh_area(annulus), exact, 0.01 * 2 * pi * 4);
+  EXPECT_EQ(std::get<TriangleMesh>(meshed.root.shapes[2].geometry).triangles.size(), 0u);
 }
 
 TEST(TessellateToDeviation, SceneKeepsNamesColoursAndMeshes) {
