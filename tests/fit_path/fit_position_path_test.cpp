@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "core/geometry_error.hpp"
 #include "core/knot_insertion.hpp"
 #include "fit_path/path_shapes.hpp"
@@ -73,7 +75,7 @@ TEST(FitPositionPath, OneKeyOrEqualKeysGiveAConstantCurve) {
   EXPECT_EQ(twice.max_error, 0.0);
 }
 
-TEST(FitPositionPath, RefusesWhatNoContinuousCurveOrNoInterpolatorMeans) {
+TEST(FitPositionPath, RefusesWhatNoInterpolatorMeans) {
   const Eigen::Vector3d a(0, 0, 0), b(1, 0, 0);
   const auto reason = [](const std::vector<double>& keys, const std::vector<Eigen::Vector3d>& values) {
     try {
@@ -83,12 +85,41 @@ TEST(FitPositionPath, RefusesWhatNoContinuousCurveOrNoInterpolatorMeans) {
     }
     return std::string("accepted");
   };
-  EXPECT_EQ(reason({0, 0.5, 0.5, 1}, {a, a, b, b}),
-            "PositionInterpolator: key 2 repeats the key before it with another value (a jump)");
   EXPECT_EQ(reason({-0.1, 1}, {a, b}), "PositionInterpolator: key 0 (-0.1) is outside [0, 1]");
   EXPECT_EQ(reason({0, 0.6, 0.5}, {a, b, a}), "PositionInterpolator: key 2 is smaller than the key before it");
   EXPECT_EQ(reason({0, 1}, {a}), "PositionInterpolator: 2 keys but 1 key values");
   EXPECT_EQ(reason({}, {}), "PositionInterpolator: no keys");
+}
+
+// A half circle of radius 1 in two quarters (21 keys each) meeting at fraction 0.5, the key repeated there.
+// With the second circle moved 1 away it is a jump: held by a knot of full multiplicity at the key, the
+// curve on each side within D of that side's path (the bound takes each side's limit). Moved 0.001 away
+// at D = 0.01 (keys written with few decimals) it is no jump: one continuous curve.
+TEST(FitPositionPath, AJumpIsAKnotOfFullMultiplicityAndANearRepeatIsNone) {
+  const auto two_arcs = [](double apart, std::vector<double>& keys, std::vector<Eigen::Vector3d>& values) {
+    keys.clear(), values.clear();
+    for (int half = 0; half < 2; ++half)
+      for (int i = 0; i <= 20; ++i) {
+        const double angle = 0.5 * 3.14159265358979 * (half + i / 20.0);
+        keys.push_back(0.5 * half + 0.5 * i / 20.0);
+        values.emplace_back(std::cos(angle) + half * apart, std::sin(angle), 0);
+      }
+  };
+  std::vector<double> keys;
+  std::vector<Eigen::Vector3d> values;
+  two_arcs(1.0, keys, values);
+  const PositionPathFit jump = fit_position_path(keys, values, 0.01);
+  EXPECT_LE(jump.max_error, 0.01);
+  EXPECT_EQ(std::count(jump.curve.knots.begin(), jump.curve.knots.end(), 0.5), jump.curve.order);
+  EXPECT_LE((curve_point(jump.curve, 0.5 - 1e-12) - values[20]).norm(), 0.01);
+  EXPECT_LE((curve_point(jump.curve, 0.5) - values[21]).norm(), 0.01);
+  two_arcs(0.001, keys, values);
+  const PositionPathFit near = fit_position_path(keys, values, 0.01);
+  EXPECT_LE(near.max_error, 0.01);
+  EXPECT_LT(std::count(near.curve.knots.begin(), near.curve.knots.end(), 0.5), near.curve.order);
+  // The bound measured the near repeat against both of its values.
+  const Eigen::Vector3d at = curve_point(near.curve, 0.5);
+  EXPECT_GE(near.max_error, std::max((at - values[20]).norm(), (at - values[21]).norm()) - 1e-12);
 }
 
 TEST(PathErrorBound, IsZeroForThePathItselfAndTheOffsetForAShiftedCopy) {
