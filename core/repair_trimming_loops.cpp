@@ -122,14 +122,22 @@ bool widen_bilinear_domain(TrimmedSurface& face) {
 }
 
 void repair_node(SceneNode& node, const std::string& path, LoopsOutsideDomain outside, std::vector<std::string>& done) {
+  std::vector<Shape> kept;
   for (size_t i = 0; i < node.shapes.size(); ++i) {
     Shape& shape = node.shapes[i];
-    auto* face = std::get_if<TrimmedSurface>(&shape.geometry);
-    if (!face) continue;
-    const std::string entity =
-        path + "/" + (display_name(shape).empty() ? "shape " + std::to_string(i) : display_name(shape));
-    for (const auto& line : repair_trimming_loops(*face, entity, outside)) done.push_back(entity + ": " + line);
+    if (auto* face = std::get_if<TrimmedSurface>(&shape.geometry)) {
+      const std::string entity =
+          path + "/" + (display_name(shape).empty() ? "shape " + std::to_string(i) : display_name(shape));
+      try {
+        for (const auto& line : repair_trimming_loops(*face, entity, outside)) done.push_back(entity + ": " + line);
+      } catch (const FaceWithoutArea& e) {
+        done.push_back(std::string(e.what()) + ": dropped");
+        continue;
+      }
+    }
+    kept.push_back(std::move(shape));
   }
+  node.shapes = std::move(kept);
   for (size_t i = 0; i < node.children.size(); ++i) {
     SceneNode& child = node.children[i];
     repair_node(child, path + "/" + (display_name(child).empty() ? "node " + std::to_string(i) : display_name(child)),
@@ -178,7 +186,7 @@ std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::
     kept.push_back(std::move(face.loops[k]));
     kept_polygons.push_back(std::move(polygons[k]));
   }
-  if (kept.empty()) throw GeometryError(entity, "every trimming loop bounds no area: the face has no area");
+  if (kept.empty()) throw FaceWithoutArea(entity, "every trimming loop bounds no area: the face has no area");
 
   // Loops far outside the domain: moved back by whole periods where the surface joins itself (a seam
   // written elsewhere, a periodic surface's loop a period away), else cut to the domain as GLU draws them.
@@ -218,7 +226,7 @@ std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::
     }
     kept = std::move(placed);
     kept_polygons = std::move(placed_polygons);
-    if (kept.empty()) throw GeometryError(entity, "no trimming loop meets the surface's domain: the face has no area");
+    if (kept.empty()) throw FaceWithoutArea(entity, "no trimming loop meets the surface's domain: the face has no area");
   }
 
   for (size_t k = 0; k < kept.size(); ++k) {

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "core/geometry_error.hpp"
 #include "core/scene.hpp"
 #include "core/trimmed_surface.hpp"
 
@@ -42,13 +43,21 @@ enum class LoopsOutsideDomain {
   cut,     // GLU's rule, which VRML/X3D viewers follow: only the part inside the domain is drawn
 };
 
+// The refusal of a face that has no area (every loop bounds none, or none meets the domain): nothing of
+// it can be drawn or meshed, so a scene drops it (repair_trimming_loops(Scene&)) instead of failing.
+class FaceWithoutArea : public GeometryError {
+ public:
+  using GeometryError::GeometryError;
+};
+
 // Repairs `face`'s loops in place; returns what was done, one line per repair (empty: nothing).
 // Throws GeometryError(entity, reason) when the loops cannot be repaired with certainty.
 std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::string& entity,
                                                LoopsOutsideDomain outside = LoopsOutsideDomain::refuse);
 
 // Every trimmed surface of the scene; lines "PATH: what was done", PATH named as validate(Scene) names
-// shapes. Throws GeometryError(PATH, reason) for the first face it cannot repair.
+// shapes. A face without area is taken out of the scene ("PATH: REASON: dropped"). Throws
+// GeometryError(PATH, reason) for the first face it cannot repair.
 std::vector<std::string> repair_trimming_loops(Scene& scene, LoopsOutsideDomain outside = LoopsOutsideDomain::refuse);
 
 }  // namespace cadnurbs
