@@ -59,7 +59,38 @@ std::vector<std::vector<Eigen::Vector3d>> surface_derivatives(const NurbsSurface
   return rational_surface_derivatives(h);
 }
 
-Eigen::Vector3d surface_point(const NurbsSurface& s, double u, double v) { return surface_derivatives(s, u, v, 0)[0][0]; }
+// The hot path of trim fitting and inversion: no allocation (surface_derivatives allocates its tables).
+// The same sums in the same order as surface_derivatives at order 0, so bit for bit the same point.
+Eigen::Vector3d surface_point(const NurbsSurface& s, double u, double v) {
+  if (s.u_order > kMaxStackOrder || s.v_order > kMaxStackOrder) return surface_derivatives(s, u, v, 0)[0][0];
+  const int uspan = find_knot_span(s.u_knots, s.u_order, s.u_count, u);
+  const int vspan = find_knot_span(s.v_knots, s.v_order, s.v_count, v);
+  double nu[kMaxStackOrder], nv[kMaxStackOrder], left[kMaxStackOrder], right[kMaxStackOrder];
+  basis_function_values(s.u_knots.data(), s.u_order, uspan, u, nu, left, right);
+  basis_function_values(s.v_knots.data(), s.v_order, vspan, v, nv, left, right);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  double weight_sum = 0;
+  const bool rational = s.is_rational();
+  for (int b = 0; b < s.v_order; ++b) {
+    const int j = vspan - s.v_order + 1 + b;
+    Eigen::Vector3d row = Eigen::Vector3d::Zero();
+    double row_weight = 0;
+    for (int a = 0; a < s.u_order; ++a) {
+      const int i = uspan - s.u_order + 1 + a;
+      if (rational) {
+        const double w = s.weights[s.index(i, j)];
+        row += nu[a] * (w * s.point(i, j));
+        row_weight += nu[a] * w;
+      } else {  // w = 1: the same products
+        row += nu[a] * s.point(i, j);
+        row_weight += nu[a];
+      }
+    }
+    sum += nv[b] * row;
+    weight_sum += nv[b] * row_weight;
+  }
+  return sum / weight_sum;
+}
 
 Eigen::Vector3d surface_normal(const NurbsSurface& s, double u, double v) {
   const double du = (s.u_end() - s.u_start()), dv = (s.v_end() - s.v_start());

@@ -133,6 +133,9 @@ void repair_node(SceneNode& node, const std::string& path, LoopsOutsideDomain ou
       } catch (const FaceWithoutArea& e) {
         done.push_back(std::string(e.what()) + ": dropped");
         continue;
+      } catch (const GeometryError& e) {  // one bad face never costs the file: the rest converts
+        done.push_back(std::string(e.what()) + ": face left out");
+        continue;
       }
     }
     kept.push_back(std::move(shape));

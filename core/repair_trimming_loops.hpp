@@ -56,8 +56,9 @@ std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::
                                                LoopsOutsideDomain outside = LoopsOutsideDomain::refuse);
 
 // Every trimmed surface of the scene; lines "PATH: what was done", PATH named as validate(Scene) names
-// shapes. A face without area is taken out of the scene ("PATH: REASON: dropped"). Throws
-// GeometryError(PATH, reason) for the first face it cannot repair.
+// shapes. A face without area is taken out of the scene ("PATH: REASON: dropped"), and so is a face
+// the repair refuses ("PATH: REASON: face left out"): one bad face never costs the file (a file left
+// without geometry is then refused by the conversion, naming these lines).
 std::vector<std::string> repair_trimming_loops(Scene& scene, LoopsOutsideDomain outside = LoopsOutsideDomain::refuse);
 
 }  // namespace cadnurbs

@@ -153,18 +153,35 @@ TEST_F(HostileInput, MeshOutputLeavesNurbsCurvesOutWithOneNoteNotWrongAdvice) {
   EXPECT_NE(read_file(path("x.x3dv")).find("NurbsCurve"), std::string::npos);
 }
 
-TEST_F(HostileInput, ARefusedTrimmingLoopIsReportedNamingTheInput) {
-  // A face whose only loop lies beside its surface's domain: cut to the domain (GLU's rule for VRML/X3D),
-  // nothing is left. The refusal used to name only the shape.
-  const std::string beside = path("beside.x3dv");
-  std::ofstream(beside) << "#X3D V3.0 utf8\nPROFILE Immersive\nShape { geometry NurbsTrimmedSurface {\n"
-                           "  uDimension 3 vDimension 2 uOrder 3 vOrder 2\n"
-                           "  controlPoint Coordinate { point [0 0 0, .5 0 .2, 1 0 0, 0 1 0, .5 1 .2, 1 1 0] }\n"
-                           "  trimmingContour [ Contour2D { children [ ContourPolyline2D { controlPoint [2 0, 3 0, 3 1, 2 0] } ] } ]\n"
-                           "} }\n";
-  const CommandResult r = run("info " + beside);
+TEST_F(HostileInput, ARefusedFaceIsLeftOutNamingTheInputAndTheFace) {
+  // A face whose only loop lies beside its surface's domain (cut to the domain under GLU's rule for
+  // VRML/X3D, nothing is left), and one whose loop is a bow tie (refused): each is left out with a line
+  // naming the input and the face; the good face converts. Alone, the bad faces leave nothing to write.
+  const std::string head = "#X3D V3.0 utf8\nPROFILE Immersive\n";
+  const std::string patch =
+      "  uDimension 3 vDimension 2 uOrder 3 vOrder 2\n"
+      "  controlPoint Coordinate { point [0 0 0, .5 0 .2, 1 0 0, 0 1 0, .5 1 .2, 1 1 0] }\n";
+  const std::string beside = "Shape { geometry NurbsTrimmedSurface {\n" + patch +
+                             "  trimmingContour [ Contour2D { children [ ContourPolyline2D { controlPoint [2 0, 3 0, 3 1, 2 0] } ] } ]\n} }\n";
+  const std::string bow_tie = "Shape { geometry NurbsTrimmedSurface {\n" + patch +
+                              "  trimmingContour [ Contour2D { children [ ContourPolyline2D { controlPoint [.1 .3, .9 .9, .9 .1, .1 .7, .1 .3] } ] } ]\n} }\n";
+  const std::string good = "Shape { geometry NurbsPatchSurface {\n" + patch + "} }\n";
+  std::ofstream(path("mixed.x3dv")) << head << beside << bow_tie << good;
+  CommandResult r = run("convert " + path("mixed.x3dv") + " -o " + path("out.x3dv"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find(path("mixed.x3dv") + ": scene/shape 0: no trimming loop meets the surface's domain: the face has no area: dropped\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find(path("mixed.x3dv") + ": scene/shape 1: trimming loop 0 crosses itself"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(": face left out\n"), std::string::npos) << r.err;
+  EXPECT_NE((r.out + r.err).find("1 NURBS surfaces"), std::string::npos) << r.out << r.err;
+  std::ofstream(path("bad.x3dv")) << head << beside;
+  r = run("convert " + path("bad.x3dv") + " -o " + path("bad_out.x3dv"));
   EXPECT_EQ(r.status, 1);
-  EXPECT_EQ(r.err, "cadnurbs info: " + beside + ": scene/shape 0: no trimming loop meets the surface's domain: the face has no area\n");
+  const std::string last = "cadnurbs convert: " + path("bad.x3dv") + ": no geometry to write (scene/shape 0: no trimming loop meets "
+                           "the surface's domain: the face has no area: dropped)\n";
+  EXPECT_TRUE(r.err.size() >= last.size() && r.err.substr(r.err.size() - last.size()) == last) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(path("bad_out.x3dv")));
 }
 
 }  // namespace
