@@ -16,6 +16,8 @@ namespace cadnurbs {
 
 namespace {
 
+constexpr int kMaxRemovalTries = 512;
+
 const char* const kEntity = "trim curve fit";
 // Intervals (in s) shorter than this are not bisected: 2^-40, far below any edge's features.
 constexpr double kShortestInterval = 0x1p-40;
@@ -274,7 +276,10 @@ TrimCurveFit fit_trim_curve(const NurbsCurve& edge, double t0, double t1, const 
   }
   // Then runs of samples after each kept one, the run doubling while removals pass and halving when one
   // fails (a fit and a check per try: galloping keeps the tries near one per kept sample, not per sample).
-  for (size_t pos = 1, run = 1; pos + 1 < kept.size();) {
+  // At most kMaxRemovalTries tries: on a long wiggly edge (a fuzzed file: 907 samples, 359 kept) the
+  // tries are each a fit and a check of every sample; stopping early keeps a few more points.
+  int tries = 0;
+  for (size_t pos = 1, run = 1; pos + 1 < kept.size() && tries < kMaxRemovalTries; ++tries) {
     const size_t count = std::min(run, kept.size() - 1 - pos);
     std::vector<int> fewer = kept;
     fewer.erase(fewer.begin() + static_cast<long>(pos), fewer.begin() + static_cast<long>(pos + count));
