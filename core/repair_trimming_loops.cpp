@@ -26,8 +26,8 @@ constexpr double kCrossingTolerance = 1e-9;
 constexpr double kLobeShare = 1e-1;
 constexpr int kMaxLobeCuts = 8;
 
-struct Domain {
-  double u0, u1, v0, v1;
+// The domain box (clip_loop_to_domain's DomainBox) with the measures the repairs use.
+struct Domain : DomainBox {
   double du() const { return u1 - u0; }
   double dv() const { return v1 - v0; }
   // How far p lies outside, as a share of the domain's size in that direction (0 inside).
@@ -164,7 +164,7 @@ std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::
   std::vector<std::vector<Eigen::Vector2d>> polygons;
   for (const auto& loop : face.loops) polygons.push_back(loop_polygon(loop));
   const NurbsSurface& s = face.surface;
-  const Domain before{s.u_start(), s.u_end(), s.v_start(), s.v_end()};
+  const Domain before{{s.u_start(), s.u_end(), s.v_start(), s.v_end()}};
   auto excursion = [](const Domain& domain, const std::vector<Eigen::Vector2d>& polygon) {
     double out = 0;
     for (const auto& p : polygon) out = std::max(out, domain.outside(p));
@@ -175,7 +175,7 @@ std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::
   if (outside_before > 0 && widen_bilinear_domain(face) && outside_before > kRoundOff)
     done.push_back("trimming loops left the bilinear patch's domain by " + message_number(outside_before) +
                    " of its size: domain widened (the patch extends exactly)");
-  const Domain domain{s.u_start(), s.u_end(), s.v_start(), s.v_end()};
+  const Domain domain{{s.u_start(), s.u_end(), s.v_start(), s.v_end()}};
   const double domain_area = domain.du() * domain.dv();
 
   // Loops that bound no area go first: they are dropped whatever else is wrong with them.
@@ -216,7 +216,7 @@ std::vector<std::string> repair_trimming_loops(TrimmedSurface& face, const std::
         throw GeometryError(entity, "trimming loop " + std::to_string(k) + " leaves the surface's domain by " +
                                         message_number(out) + " of its size (more than " +
                                         message_number(kDomainSlack) + " cannot be moved onto it)");
-      const std::vector<TrimLoop> clipped = clip_loop_to_domain(kept[k], {domain.u0, domain.u1, domain.v0, domain.v1});
+      const std::vector<TrimLoop> clipped = clip_loop_to_domain(kept[k], domain);
       done.push_back("trimming loop " + std::to_string(k) + " leaves the surface's domain by " + message_number(out) +
                      " of its size: cut to the domain, as GLU-based viewers draw it (" +
                      (clipped.empty() ? std::string("nothing of it is inside: dropped")
