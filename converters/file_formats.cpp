@@ -107,8 +107,10 @@ BrepTranslation read_compact_binary(const std::string& path, const SceneReadOpti
 }
 
 BrepTranslation read_any_vrml(const std::string& path, const SceneReadOptions& options) {
+  SceneFromNodes vrml = read_vrml_scene(path, options.homogeneous_control_points);
   BrepTranslation read;
-  read.scene = read_vrml(path, options.homogeneous_control_points);
+  read.scene = std::move(vrml.scene);
+  read.notes = std::move(vrml.notes);
   return read;
 }
 

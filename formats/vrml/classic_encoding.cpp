@@ -167,6 +167,11 @@ class ClassicWriter {
       }
       indent(depth);
       out_ += "]";
+    } else if (const auto* words = std::get_if<FieldWords>(&v)) {
+      const bool multiple = words->type_name.starts_with("MF");
+      if (multiple) out_ += "[";
+      for (size_t i = 0; i < words->words.size(); ++i) out_ += (i ? " " : "") + words->words[i];
+      if (multiple) out_ += "]";
     } else if (std::holds_alternative<MFFloat>(v) || std::holds_alternative<MFInt32>(v) ||
                std::holds_alternative<MFVec2f>(v) || std::holds_alternative<MFVec3f>(v)) {
       out_ += "[";

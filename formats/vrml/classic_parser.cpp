@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <tuple>
 #include <stdexcept>
 
 #include "formats/common/file_io.hpp"
@@ -22,16 +24,15 @@ class ClassicParser {
   ClassicParser(const std::string& text, const std::string& name) : text_(text), name_(name), tokens_(text) {}
 
   NodeDocument parse() {
-    NodeDocument document;
-    document.dialect = header();
-    dialect_ = document.dialect;
+    document_.dialect = header();
+    dialect_ = document_.dialect;
     for (;;) {
       const ClassicToken& token = peek();
       if (token.kind == Kind::end) break;
-      if (token.kind == Kind::word && skip_statement(token.text)) continue;
-      document.roots.push_back(node_statement());
+      if (token.kind == Kind::word && statement(token.text)) continue;
+      document_.roots.push_back(node_statement());
     }
-    return document;
+    return std::move(document_);
   }
 
  private:
@@ -40,6 +41,7 @@ class ClassicParser {
   }
 
   const ClassicToken& peek() {
+    if (pushed_back_) return *pushed_back_;
     try {
       return tokens_.peek();
     } catch (const std::runtime_error& e) {
@@ -48,6 +50,11 @@ class ClassicParser {
   }
 
   ClassicToken next() {
+    if (pushed_back_) {
+      ClassicToken token = std::move(*pushed_back_);
+      pushed_back_.reset();
+      return token;
+    }
     try {
       return tokens_.next();
     } catch (const std::runtime_error& e) {
@@ -81,8 +88,9 @@ class ClassicParser {
     fail(1, "not a VRML97 (#VRML V2.0 utf8) or X3D classic (#X3D V3.x utf8) header");
   }
 
-  // Header statements are skipped; the ones outside the subset are refused. False: not a statement.
-  bool skip_statement(const std::string& word) {
+  // Header statements are skipped; PROTO / EXTERNPROTO interfaces, ROUTE, IMPORT and EXPORT are
+  // recorded; UNIT is refused (it would change what the numbers mean). False: not a statement.
+  bool statement(const std::string& word) {
     if (word == "PROFILE") {
       next();
       expect(Kind::word, "a profile name");
@@ -99,24 +107,136 @@ class ClassicParser {
       expect(Kind::string, "a META value");
       return true;
     }
-    if (word == "EXTERNPROTO") {
-      next();
-      expect(Kind::word, "an EXTERNPROTO name");
-      skip_balanced(Kind::open_bracket, Kind::close_bracket);
-      if (peek().kind == Kind::string) next();
-      else skip_balanced(Kind::open_bracket, Kind::close_bracket);
+    if (word == "EXTERNPROTO" || word == "PROTO") {
+      proto_declaration(word == "EXTERNPROTO");
       return true;
     }
-    if (word == "PROTO") {
-      next();
-      expect(Kind::word, "a PROTO name");
-      skip_balanced(Kind::open_bracket, Kind::close_bracket);
-      skip_balanced(Kind::open_brace, Kind::close_brace);
+    if (word == "ROUTE") {
+      route();
       return true;
     }
-    if (word == "ROUTE" || word == "IMPORT" || word == "EXPORT" || word == "UNIT")
-      fail(peek().line, word + " statements are outside the subset cadnurbs reads");
+    if (word == "IMPORT" || word == "EXPORT") {
+      import_export(word);
+      return true;
+    }
+    if (word == "UNIT") fail(peek().line, "UNIT statements are not read: they change the units of the numbers");
     return false;
+  }
+
+  // "a.b" as its two names.
+  std::pair<std::string, std::string> dotted(const std::string& what) {
+    const ClassicToken token = expect(Kind::word, what);
+    const size_t dot = token.text.find('.');
+    if (dot == std::string::npos || dot == 0 || dot + 1 == token.text.size())
+      fail(token.line, "expected " + what + " as NAME.FIELD, found '" + token.text + "'");
+    return {token.text.substr(0, dot), token.text.substr(dot + 1)};
+  }
+
+  void route() {
+    const int line = next().line;
+    Route r;
+    std::tie(r.from_node, r.from_field) = dotted("a ROUTE's source");
+    const ClassicToken to = expect(Kind::word, "TO");
+    if (to.text != "TO") fail(to.line, "expected TO in a ROUTE, found '" + to.text + "'");
+    std::tie(r.to_node, r.to_field) = dotted("a ROUTE's destination");
+    r.line = line;
+    document_.routes.push_back(std::move(r));
+  }
+
+  // IMPORT inline.name [AS name] / EXPORT name [AS name].
+  void import_export(const std::string& word) {
+    next();
+    std::string text = word + " " + expect(Kind::word, "a name after " + word).text;
+    if (peek().kind == Kind::word && peek().text == "AS") {
+      next();
+      text += " AS " + expect(Kind::word, "a name after AS").text;
+    }
+    document_.imports_exports.push_back(std::move(text));
+  }
+
+  // "IS <proto field>" in a PROTO body, instead of a value: the proto field's name, else nothing.
+  std::optional<std::string> is_connection() {
+    if (!(peek().kind == Kind::word && peek().text == "IS")) return std::nullopt;
+    const ClassicToken is = next();
+    if (body_depth_ == 0) fail(is.line, "IS outside a PROTO body");
+    return expect(Kind::word, "a PROTO field after IS").text;
+  }
+
+  // An interface declaration "<access> <Type> <name>", with the value a PROTO's field or exposedField
+  // (or a Script's) has, or an IS connection in a PROTO body.
+  FieldSchema declaration(bool with_value, InterfaceDeclaration& out, std::optional<std::string>& is) {
+    const ClassicToken keyword = expect(Kind::word, "a field declaration");
+    const auto access = declaration_access(keyword.text);
+    if (!access) fail(keyword.line, "expected field, exposedField, eventIn or eventOut, found '" + keyword.text + "'");
+    const ClassicToken type = expect(Kind::word, "a field type");
+    const ClassicToken name = expect(Kind::word, "a field name");
+    auto schema = declared_field(name.text, type.text, *access);
+    if (!schema) fail(type.line, "'" + type.text + "' is not a field type");
+    out = InterfaceDeclaration{keyword.text, type.text, name.text, std::nullopt};
+    is = is_connection();
+    if (!is && with_value && (*access == FieldAccess::initialize_only || *access == FieldAccess::input_output))
+      out.default_value = value(*schema, name);
+    return *schema;
+  }
+
+  void proto_declaration(bool external) {
+    next();
+    const ClassicToken name = expect(Kind::word, external ? "an EXTERNPROTO name" : "a PROTO name");
+    ProtoDeclaration proto{name.text, external, {}, {}, nullptr, name.line};
+    NodeSchema schema{name.text, "children", {}};
+    expect(Kind::open_bracket, "'[' after " + name.text);
+    // A PROTO's defaults and body are in its own DEF name scope.
+    auto outer_defs = std::move(defs_);
+    defs_.clear();
+    while (peek().kind != Kind::close_bracket) {
+      if (peek().kind == Kind::end) fail(name.line, "the interface of " + name.text + " is never closed");
+      InterfaceDeclaration d;
+      std::optional<std::string> is;
+      schema.fields.push_back(declaration(!external, d, is));
+      if (is) fail(name.line, "IS in the interface of " + name.text);
+      proto.interface.push_back(std::move(d));
+    }
+    next();
+    if (external) {
+      if (peek().kind == Kind::string) {
+        proto.urls.push_back(next().text);
+      } else {
+        expect(Kind::open_bracket, "the URLs of " + name.text);
+        while (peek().kind != Kind::close_bracket) proto.urls.push_back(expect(Kind::string, "a URL").text);
+        next();
+      }
+    } else {
+      // The PROTO is known inside its own body (a body may nest an instance of it only through a
+      // field, which VRML forbids; knowing it costs nothing).
+      proto_schemas_[name.text] = schema;
+      proto.body = std::make_shared<NodeDocument>(body(name));
+    }
+    defs_ = std::move(outer_defs);
+    proto_schemas_[name.text] = std::move(schema);
+    document_.protos.push_back(std::move(proto));
+  }
+
+  // A PROTO body: "{ statements }", its PROTOs local to it.
+  NodeDocument body(const ClassicToken& name) {
+    expect(Kind::open_brace, "'{' for the body of " + name.text);
+    NodeDocument outer = std::move(document_);
+    document_ = NodeDocument{};
+    document_.dialect = dialect_;
+    const auto outer_protos = proto_schemas_;
+    ++body_depth_;
+    for (;;) {
+      const ClassicToken& token = peek();
+      if (token.kind == Kind::close_brace) break;
+      if (token.kind == Kind::end) fail(name.line, "the body of " + name.text + " is never closed");
+      if (token.kind == Kind::word && statement(token.text)) continue;
+      document_.roots.push_back(node_statement());
+    }
+    next();
+    --body_depth_;
+    proto_schemas_ = outer_protos;
+    NodeDocument out = std::move(document_);
+    document_ = std::move(outer);
+    return out;
   }
 
   void skip_balanced(Kind open, Kind close) {
@@ -144,22 +264,49 @@ class ClassicParser {
       token = expect(Kind::word, "a node type after DEF " + def_name);
     }
     const NodeSchema* schema = node_schema(dialect_, token.text);
-    if (!schema)
-      fail(token.line, "unsupported node " + token.text + " (outside the " +
-                           (dialect_ == VrmlDialect::vrml97 ? "VRML97" : "X3D") + " subset cadnurbs reads)");
+    const auto proto = proto_schemas_.find(token.text);
+    const NodeSchema* proto_schema = proto == proto_schemas_.end() ? nullptr : &proto->second;
+    if (!schema && !proto_schema)
+      fail(token.line, "unknown node " + token.text + " (neither a " +
+                           (dialect_ == VrmlDialect::vrml97 ? "VRML97" : "X3D") + " node nor a PROTO declared before it)");
     NodePtr node = make_node(token.text, def_name);
     node->line = token.line;
+    node->proto_instance = !schema;
     if (++depth_ > max_depth) fail(token.line, "nodes nested deeper than " + std::to_string(max_depth) + " levels");
     expect(Kind::open_brace, "'{' after " + token.text);
+    std::vector<FieldSchema> declared;  // a Script's own fields
     for (;;) {
       const ClassicToken field_name = next();
       if (field_name.kind == Kind::close_brace) break;
       if (field_name.kind != Kind::word)
         fail(field_name.line, "expected a field of " + node->type + " or '}', found " + describe(field_name));
-      const auto type = field_type(*schema, field_name.text);
-      if (!type) fail(field_name.line, node->type + " has no field " + field_name.text + " in the subset cadnurbs reads");
+      if (declaration_access(field_name.text) && declares_own_fields(node->type)) {
+        tokens_back(field_name);
+        InterfaceDeclaration d;
+        std::optional<std::string> is;
+        declared.push_back(declaration(true, d, is));
+        if (is) node->is_connections.push_back(IsConnection{d.name, *is});
+        if (d.default_value)
+          node->fields.push_back(Field{d.name, std::move(*d.default_value), {}, field_name.line});
+        d.default_value.reset();
+        node->declarations.push_back(std::move(d));
+        continue;
+      }
+      const FieldSchema* f = schema ? find_field(*schema, field_name.text) : nullptr;
+      if (!f && proto_schema) f = find_field(*proto_schema, field_name.text);
+      if (!f)
+        for (const auto& d : declared)
+          if (d.name == field_name.text) f = &d;
+      if (!f) fail(field_name.line, node->type + " has no field " + field_name.text);
+      if ((f->access == FieldAccess::input_only || f->access == FieldAccess::output_only) &&
+          !(peek().kind == Kind::word && peek().text == "IS"))
+        fail(field_name.line, "field " + field_name.text + " of " + node->type + " is an event: it has no value");
+      if (auto is = is_connection()) {
+        node->is_connections.push_back(IsConnection{field_name.text, *is});
+        continue;
+      }
       if (node->find(field_name.text)) fail(field_name.line, "field " + field_name.text + " is given twice");
-      Field field{field_name.text, value(*type, field_name), {}, field_name.line};
+      Field field{field_name.text, value(*f, field_name), {}, field_name.line};
       node->fields.push_back(std::move(field));
     }
     --depth_;
@@ -231,8 +378,52 @@ class ClassicParser {
     return token.text;
   }
 
-  FieldValue value(FieldType type, const ClassicToken& field) {
-    switch (type) {
+
+  // Puts back a token just read (a declaration keyword): the declaration reader starts from it.
+  void tokens_back(const ClassicToken& token) { pushed_back_ = token; }
+
+  // One word of a FieldWords value: a number or TRUE/FALSE.
+  std::string word(const ClassicToken& field) {
+    const ClassicToken token = next();
+    if (token.kind == Kind::number || (token.kind == Kind::word && (token.text == "TRUE" || token.text == "FALSE")))
+      return token.text;
+    fail(token.line, "field " + field.text + ": expected a number or TRUE/FALSE, found " + describe(token));
+  }
+
+  // One value of `type_name` as words (an SFImage: width, height, components, then a pixel per
+  // width x height).
+  void words_of_one(const std::string& type_name, const ClassicToken& field, std::vector<std::string>& out) {
+    int count = words_per_value(type_name);
+    if (count == 0) {
+      double size[3];
+      for (double& v : size) {
+        out.push_back(word(field));
+        v = std::strtod(out.back().c_str(), nullptr);
+      }
+      if (!(size[0] >= 0 && size[1] >= 0 && size[0] * size[1] <= 1e8)) fail(field.line, "field " + field.text + ": image size out of range");
+      count = static_cast<int>(size[0] * size[1]);
+    }
+    for (int i = 0; i < count; ++i) out.push_back(word(field));
+  }
+
+  FieldWords words(const FieldSchema& schema, const ClassicToken& field) {
+    FieldWords out{schema.type_name, {}};
+    if (schema.type == FieldType::MFWords && peek().kind == Kind::open_bracket) {
+      next();
+      while (peek().kind != Kind::close_bracket) {
+        if (peek().kind == Kind::end) fail(field.line, "field " + field.text + ": '[' is never closed");
+        words_of_one(schema.type_name, field, out.words);
+      }
+      next();
+    } else {
+      words_of_one(schema.type_name, field, out.words);
+    }
+    return out;
+  }
+
+  FieldValue value(const FieldSchema& schema, const ClassicToken& field) {
+    if (schema.type == FieldType::SFWords || schema.type == FieldType::MFWords) return words(schema, field);
+    switch (schema.type) {
       case FieldType::SFBool: {
         const ClassicToken token = next();
         if (token.kind == Kind::word && token.text == "TRUE") return true;
@@ -283,6 +474,8 @@ class ClassicParser {
         r.angle = number(field);
         return r;
       }
+      case FieldType::SFWords:
+      case FieldType::MFWords: break;
       case FieldType::SFNode: {
         if (peek().kind == Kind::word && peek().text == "NULL") {
           next();
@@ -292,6 +485,10 @@ class ClassicParser {
       }
       case FieldType::MFNode: {
         MFNode out;
+        if (peek().kind == Kind::word && peek().text == "NULL") {  // lenient: some writers say NULL for []
+          next();
+          return out;
+        }
         if (peek().kind != Kind::open_bracket) {
           out.nodes.push_back(node_statement());
           return out;
@@ -313,6 +510,10 @@ class ClassicParser {
   ClassicTokenizer tokens_;
   VrmlDialect dialect_ = VrmlDialect::x3d;
   std::map<std::string, NodePtr> defs_;
+  NodeDocument document_;
+  std::map<std::string, NodeSchema> proto_schemas_;
+  int body_depth_ = 0;  // inside PROTO bodies: IS is allowed
+  std::optional<ClassicToken> pushed_back_;
   // Recursion guard: far deeper than any real scene, far shallower than the stack.
   static constexpr int max_depth = 1000;
   int depth_ = 0;

@@ -3,6 +3,7 @@
 // so that Scene <-> nodes is written once and VRML97, X3D classic and X3D XML differ only in spelling.
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -25,11 +26,17 @@ struct MFString { std::vector<std::string> values; };
 struct SFColor { Eigen::Vector3d value = Eigen::Vector3d::Zero(); };
 struct SFVec3f { Eigen::Vector3d value = Eigen::Vector3d::Zero(); };
 struct SFRotation { Eigen::Vector3d axis = Eigen::Vector3d::UnitZ(); double angle = 0.0; };
+// A value of a type the Scene mapping never reads, kept as its words (numbers, TRUE/FALSE) so that it
+// can be written again: one value of `type_name` or, for an MF type, any number of them.
+struct FieldWords {
+  std::string type_name;  // "SFVec2f", "MFColorRGBA"...
+  std::vector<std::string> words;
+};
 struct SFNode { NodePtr node; };  // null: NULL
 struct MFNode { std::vector<NodePtr> nodes; };
 
 using FieldValue = std::variant<bool, int, double, std::string, MFFloat, MFInt32, MFVec2f, MFVec3f, MFString,
-                                SFColor, SFVec3f, SFRotation, SFNode, MFNode>;
+                                SFColor, SFVec3f, SFRotation, SFNode, MFNode, FieldWords>;
 
 struct Field {
   std::string name;
@@ -38,11 +45,27 @@ struct Field {
   int line = 0;               // where it was read (0 for fields built in memory)
 };
 
+// A field as a PROTO interface or a Script node declares it.
+struct InterfaceDeclaration {
+  std::string access;     // as written: field, exposedField, eventIn, eventOut, initializeOnly...
+  std::string type_name;  // "SFFloat", "MFNode"...
+  std::string name;
+  std::optional<FieldValue> default_value;  // a PROTO's field or exposedField (a Script's are its fields)
+};
+
+// Inside a PROTO body: field `node_field` of a node IS the PROTO's `proto_field`.
+struct IsConnection {
+  std::string node_field, proto_field;
+};
+
 struct Node {
-  std::string type;      // "Transform", "NurbsPatchSurface"...
+  std::string type;      // "Transform", "NurbsPatchSurface"... or the name of a PROTO
   std::string def_name;  // empty unless DEF'd; a node reached twice in a graph is written once, then USE'd
   std::vector<Field> fields;  // in writing order
   int line = 0;               // where it was read (0 for nodes built in memory)
+  bool proto_instance = false;  // an instance of a PROTO or EXTERNPROTO the file declares
+  std::vector<InterfaceDeclaration> declarations;  // a Script's (or shader's) own fields
+  std::vector<IsConnection> is_connections;        // in a PROTO body
 
   // The field called `name`, or null.
   const Field* find(std::string_view name) const;
@@ -64,9 +87,30 @@ NodePtr make_node(std::string type, std::string def_name = {});
 // A file's worth of nodes: the dialect decides the NURBS node names and field types.
 enum class VrmlDialect { vrml97, x3d };
 
+// ROUTE from_node.from_field TO to_node.to_field (DEF names).
+struct Route {
+  std::string from_node, from_field, to_node, to_field;
+  int line = 0;
+};
+
+struct NodeDocument;
+
+// A PROTO or EXTERNPROTO declaration.
+struct ProtoDeclaration {
+  std::string name;
+  bool external = false;
+  std::vector<InterfaceDeclaration> interface;
+  std::vector<std::string> urls;         // an EXTERNPROTO's
+  std::shared_ptr<NodeDocument> body;   // a PROTO's nodes, ROUTEs and PROTOs, in their own DEF scope
+  int line = 0;
+};
+
 struct NodeDocument {
   VrmlDialect dialect = VrmlDialect::x3d;
   std::vector<NodePtr> roots;  // top-level nodes in file order
+  std::vector<Route> routes;
+  std::vector<ProtoDeclaration> protos;
+  std::vector<std::string> imports_exports;  // IMPORT / EXPORT statements, as "IMPORT a.b AS c"
 };
 
 }  // namespace cadnurbs

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "core/analytic_surface.hpp"
 #include "core/geometry_error.hpp"
 #include "core/knot_vector.hpp"
 #include "formats/vrml/parse_error.hpp"
@@ -32,9 +33,14 @@ class GeometryReader {
       return {checked(TrimmedSurface{surface(*s->node), loops(node_)}, node_)};
     }
     if (type == "NurbsCurve") return {checked(curve(node_, 3), node_)};
+    // Without a coord node, X3D draws nothing (white_dune's robot fills one in by a Script later).
+    const bool has_coord = node_.get<SFNode>("coord") && node_.get<SFNode>("coord")->node;
+    if ((type == "IndexedFaceSet" || type == "IndexedLineSet" || type == "IndexedTriangleSet") && !has_coord) return {};
     if (type == "IndexedFaceSet") return {checked(face_set(), node_)};
     if (type == "IndexedLineSet") return line_set();
     if (type == "Box") return {box()};
+    if (type == "Sphere") return {checked(sphere(), node_)};
+    if (type == "IndexedTriangleSet") return {checked(triangle_set(), node_)};
     fail(node_, "is not a geometry node cadnurbs reads");
   }
 
@@ -143,6 +149,13 @@ class GeometryReader {
     return c;
   }
 
+  // A trimming segment without a single point.
+  static bool is_empty_segment(const Node& segment) {
+    for (const char* field : {"point", "controlPoint"})
+      if (const auto* points = segment.get<MFVec2f>(field); points && !points->values.empty()) return false;
+    return true;
+  }
+
   std::vector<TrimLoop> loops(const Node& owner) const {
     std::vector<TrimLoop> out;
     const auto* contours = owner.get<MFNode>("trimmingContour");
@@ -153,7 +166,7 @@ class GeometryReader {
       TrimLoop loop;
       if (const auto* children = contour->get<MFNode>("children"))
         for (const auto& segment : children->nodes) {
-          if (!segment) continue;
+          if (!segment || is_empty_segment(*segment)) continue;  // draws nothing (white_dune writes such)
           if (segment->type == "NurbsCurve2D") {
             loop.segments.emplace_back(curve(*segment, 2));
           } else if (segment->type == "Polyline2D" || segment->type == "ContourPolyline2D") {
@@ -166,7 +179,7 @@ class GeometryReader {
             fail(*segment, "is not a trimming segment (NurbsCurve2D or a 2D polyline)");
           }
         }
-      if (loop.segments.empty()) fail(*contour, "has no segments");
+      if (loop.segments.empty()) continue;  // trims nothing
       out.push_back(std::move(loop));
     }
     return out;
@@ -303,6 +316,34 @@ class GeometryReader {
     return out;
   }
 
+  // The exact rational biquadratic sphere about the origin, its poles on the y axis (X3D's up).
+  TrimmedSurface sphere() const {
+    const double radius = node_.get<double>("radius") ? *node_.get<double>("radius") : 1.0;
+    if (!(radius > 0.0)) fail(node_, "radius must be positive");
+    SphereSurface sphere{AxisFrame{Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(),
+                                   Eigen::Vector3d::UnitY()},
+                         radius};
+    return TrimmedSurface{analytic_to_nurbs(sphere, NaturalBox{0.0, 2.0 * M_PI, -M_PI / 2, M_PI / 2}).surface, {}};
+  }
+
+  TriangleMesh triangle_set() const {
+    TriangleMesh mesh;
+    mesh.positions = coordinates(node_);
+    const auto* index = node_.get<MFInt32>("index");
+    const std::vector<int> corners = index ? index->values : std::vector<int>{};
+    if (corners.size() % 3 != 0) fail(node_, "index holds " + std::to_string(corners.size()) + " values, not whole triangles");
+    const bool ccw = node_.get<bool>("ccw") ? *node_.get<bool>("ccw") : true;
+    for (size_t i = 0; i < corners.size(); i += 3) {
+      for (size_t k = 0; k < 3; ++k)
+        if (corners[i + k] < 0 || static_cast<size_t>(corners[i + k]) >= mesh.positions.size())
+          fail(node_, "index " + std::to_string(corners[i + k]) + " is out of range (" +
+                          std::to_string(mesh.positions.size()) + " points)");
+      if (ccw) mesh.triangles.push_back({corners[i], corners[i + 1], corners[i + 2]});
+      else mesh.triangles.push_back({corners[i], corners[i + 2], corners[i + 1]});
+    }
+    return mesh;
+  }
+
   Geometry box() const {
     const auto* size = node_.get<SFVec3f>("size");
     const Eigen::Vector3d half = 0.5 * (size ? size->value : Eigen::Vector3d(2, 2, 2));
@@ -325,6 +366,13 @@ class GeometryReader {
 };
 
 }  // namespace
+
+bool reads_geometry_node(const std::string& type) {
+  static const char* const types[] = {"NurbsSurface",   "NurbsPatchSurface", "NurbsTrimmedSurface", "TrimmedSurface",
+                                      "NurbsCurve",     "IndexedFaceSet",    "IndexedLineSet",      "Box",
+                                      "Sphere",         "IndexedTriangleSet"};
+  return std::find(std::begin(types), std::end(types), type) != std::end(types);
+}
 
 std::vector<Geometry> geometry_from_node(const Node& node, const GeometryReadContext& context) {
   return GeometryReader(node, context).read();

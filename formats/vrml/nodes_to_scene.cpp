@@ -1,8 +1,10 @@
 #include "formats/vrml/nodes_to_scene.hpp"
 
+#include <map>
 #include <stdexcept>
 
 #include "formats/vrml/parse_error.hpp"
+#include "formats/vrml/node_schema.hpp"
 #include "formats/vrml/nodes_to_geometry.hpp"
 #include "formats/vrml/transform_fields.hpp"
 #include "formats/vrml/vrml_identifier.hpp"
@@ -12,12 +14,70 @@ namespace cadnurbs {
 
 namespace {
 
-bool is_grouping(const Node& node) {
-  return node.type == "Transform" || node.type == "Group" || node.type == "NurbsGroup";
+// Grouping nodes placed by translation, rotation, scale, scaleOrientation and center, as Transform is.
+bool is_placed_like_transform(const std::string& type) {
+  return type == "Transform" || type == "HAnimHumanoid" || type == "HAnimJoint" || type == "HAnimSite" ||
+         type == "CADPart" || type == "CADAssembly";
 }
 
+bool is_plain_group(const std::string& type) {
+  return type == "Group" || type == "NurbsGroup" || type == "StaticGroup" || type == "Anchor" || type == "Billboard" ||
+         type == "Collision" || type == "HAnimSegment" || type == "CADLayer" || type == "Switch" || type == "LOD" ||
+         type == "CoordinateDeformer";
+}
+
+bool is_grouping(const Node& node) {
+  return !node.proto_instance && (is_placed_like_transform(node.type) || is_plain_group(node.type));
+}
+
+// Read and not reported: the writers make their own.
 bool is_ignored(const Node& node) {
   return node.type == "WorldInfo" || node.type == "NavigationInfo" || node.type == "Viewpoint";
+}
+
+const char* const kAnimation = "animation and interaction are not converted: the scene is taken at rest";
+
+// Why a node of this type has no place in a Scene.
+std::string why_left_out(const Node& node) {
+  const std::string& t = node.type;
+  if (node.proto_instance) return "PROTO instances are not expanded";
+  auto ends = [&](const char* suffix) { return t.ends_with(suffix); };
+  if (ends("Interpolator") || ends("Sensor") || ends("Trigger") || ends("Sequencer") || ends("Chaser") ||
+      ends("Damper") || t == "Script" || t == "BooleanFilter" || t == "BooleanToggle" || t == "TimeSensor")
+    return kAnimation;
+  if (t == "Inline" || t == "InlineLoadControl") return "the url is another file, not followed";
+  if (ends("Light") || t == "Background" || t == "TextureBackground" || t == "Fog" || t == "LocalFog" ||
+      t == "Sound" || t == "SpatialSound" || t == "AudioClip" || t == "Sound")
+    return "lights, sound and environment have no place in the output";
+  return "no place in a Scene";
+}
+
+// The nodes of a grouping node that are drawn: Switch's chosen one, LOD's first level, HAnimHumanoid's
+// skeleton and skin, CADFace's shape, else the children.
+std::vector<NodePtr> drawn_children(const Node& node) {
+  auto nodes = [&](const char* field) {
+    if (const auto* mf = node.get<MFNode>(field)) return mf->nodes;
+    if (const auto* sf = node.get<SFNode>(field); sf && sf->node) return std::vector<NodePtr>{sf->node};
+    return std::vector<NodePtr>{};
+  };
+  if (node.type == "Switch") {
+    auto choices = node.get<MFNode>("choice") ? nodes("choice") : nodes("children");
+    const int* which = node.get<int>("whichChoice");
+    if (!which || *which < 0 || static_cast<size_t>(*which) >= choices.size()) return {};
+    return {choices[static_cast<size_t>(*which)]};
+  }
+  if (node.type == "LOD") {
+    auto levels = node.get<MFNode>("level") ? nodes("level") : nodes("children");
+    if (levels.size() > 1) levels.resize(1);
+    return levels;
+  }
+  if (node.type == "HAnimHumanoid") {
+    auto out = nodes("skeleton");
+    for (auto& skin : nodes("skin")) out.push_back(skin);
+    return out;
+  }
+  if (node.type == "CADFace") return nodes("shape");
+  return nodes("children");
 }
 
 class SceneBuilder {
@@ -28,7 +88,7 @@ class SceneBuilder {
     context_.homogeneous = homogeneous;
   }
 
-  Scene build() {
+  SceneFromNodes build() {
     for (const auto& root : document_.roots)
       if (root && root->type == "WorldInfo") read_world_info(*root);
     Scene scene;
@@ -43,7 +103,13 @@ class SceneBuilder {
       ancestors.push_back(Ancestor{"", &scene.root});
       for (const Node* node : content) add_child(scene.root, *node, ancestors);
     }
-    return scene;
+    if (!document_.routes.empty()) left_out("ROUTE", kAnimation, document_.routes.size());
+    SceneFromNodes out{std::move(scene), {}};
+    for (const auto& kind : left_out_order_) {
+      const auto& [count, why] = left_out_[kind];
+      out.notes.push_back(std::to_string(count) + " " + kind + " left out: " + why);
+    }
+    return out;
   }
 
  private:
@@ -83,13 +149,34 @@ class SceneBuilder {
     count(node);
     SceneNode out;
     out.name = name_of(node);
-    if (node.type == "Transform") out.transform = transform(node);
+    if (is_placed_like_transform(node.type)) out.transform = transform(node);
     ancestors.push_back(Ancestor{node.def_name, &out});
-    if (const auto* children = node.get<MFNode>("children"))
-      for (const auto& child : children->nodes)
+    if (node.type == "CoordinateDeformer" && !deforms_nothing(node)) {
+      left_out("CoordinateDeformer", "its deformation is not evaluated; its children are left out with it");
+    } else {
+      for (const auto& child : drawn_children(node))
         if (child) add_child(out, *child, ancestors);
+    }
     ancestors.pop_back();
     return out;
+  }
+
+  // scale 0 in some direction (white_dune's robot grows parts from nothing by animating it).
+  static bool scaled_to_nothing(const Node& node) {
+    const auto* s = node.get<SFVec3f>("scale");
+    return s && s->value.allFinite() && s->value.prod() == 0.0;
+  }
+
+  // A CoordinateDeformer with no control points moves no coordinate.
+  static bool deforms_nothing(const Node& node) {
+    const auto* points = node.get<MFVec3f>("controlPoint");
+    return !points || points->values.empty();
+  }
+
+  void left_out(const std::string& kind, const std::string& why, size_t count = 1) {
+    auto [it, added] = left_out_.try_emplace(kind, 0, why);
+    if (added) left_out_order_.push_back(kind);
+    it->second.first += count;
   }
 
   void add_child(SceneNode& parent, const Node& child, std::vector<Ancestor>& ancestors) {
@@ -101,9 +188,24 @@ class SceneBuilder {
           if (grandchild) add_child(parent, *grandchild, ancestors);
       return;
     }
-    if (is_grouping(child)) parent.children.push_back(scene_node(child, ancestors));
-    else if (child.type == "Shape") add_shapes(parent, child, ancestors);
-    else if (!is_ignored(child)) fail(child, child.type + " cannot stand among the children of a group");
+    if (is_grouping(child) && is_placed_like_transform(child.type) && scaled_to_nothing(child))
+      left_out(child.type + " scaled to nothing", "it draws nothing at rest; its children are left out with it");
+    else if (is_grouping(child)) parent.children.push_back(scene_node(child, ancestors));
+    else if (child.type == "Shape" && !child.proto_instance) add_shapes(parent, child, ancestors);
+    else if (is_ignored(child) || child.type == "NurbsSet") return;  // NurbsSet only names geometry drawn elsewhere
+    else if (node_schema_allows_children(child)) left_out(kind_of(child), why_left_out(child));
+    else fail(child, child.type + " cannot stand among the children of a group");
+  }
+
+  // "Text", or "SuperShape (PROTO)".
+  static std::string kind_of(const Node& node) { return node.type + (node.proto_instance ? " (PROTO)" : ""); }
+
+  // Nodes that may stand among children: anything but the property nodes (Material, Appearance,
+  // Coordinate, geometry...), whose default containerField is not "children".
+  bool node_schema_allows_children(const Node& node) const {
+    if (node.proto_instance) return true;
+    const NodeSchema* schema = node_schema(document_.dialect, node.type);
+    return schema && schema->container_field == "children";
   }
 
   Eigen::Affine3d transform(const Node& node) const {
@@ -128,16 +230,21 @@ class SceneBuilder {
   }
 
   // The colour of an Appearance, and the enclosing node it belongs to when its DEF says so.
-  void apply_appearance(const Node& shape, Shape& out, std::vector<Ancestor>& ancestors) const {
+  void apply_appearance(const Node& shape, Shape& out, std::vector<Ancestor>& ancestors) {
     const auto* appearance_field = shape.get<SFNode>("appearance");
     if (!appearance_field || !appearance_field->node) return;
     const Node& appearance = *appearance_field->node;
     if (appearance.type != "Appearance") fail(appearance, "appearance must be an Appearance");
+    for (const char* field : {"texture", "textureTransform"})
+      if (const auto* t = appearance.get<SFNode>(field); t && t->node)
+        left_out(t->node->type, "textures are not converted; the shape keeps its material's colour");
     const auto* material_field = appearance.get<SFNode>("material");
     if (!material_field || !material_field->node) return;
     const Node& material = *material_field->node;
-    if (material.type != "Material") fail(material, "material must be a Material");
-    const SFColor* colour = material.get<SFColor>("diffuseColor");
+    const bool is_material = material.type == "Material" || material.type == "TwoSidedMaterial" ||
+                             material.type == "PhysicalMaterial" || material.type == "UnlitMaterial";
+    if (!is_material) fail(material, "material must be a Material");
+    const SFColor* colour = material.get<SFColor>(material.type == "PhysicalMaterial" ? "baseColor" : "diffuseColor");
     if (!colour) colour = material.get<SFColor>("emissiveColor");
     if (!colour) return;
     const Colour c{colour->value.x(), colour->value.y(), colour->value.z()};
@@ -156,6 +263,17 @@ class SceneBuilder {
   void add_shapes(SceneNode& parent, const Node& shape, std::vector<Ancestor>& ancestors) {
     const auto* geometry = shape.get<SFNode>("geometry");
     if (!geometry || !geometry->node) return;  // draws nothing
+    const Node& geometry_node = *geometry->node;
+    if (geometry_node.proto_instance || !reads_geometry_node(geometry_node.type)) {
+      left_out(kind_of(geometry_node), geometry_node.proto_instance
+                                           ? "PROTO instances are not expanded"
+                                           : "geometry without a NURBS or mesh form in cadnurbs");
+      return;
+    }
+    for (const char* field : {"texCoord", "color"})
+      if (const auto* f = geometry_node.get<SFNode>(field); f && f->node)
+        left_out(f->node->type, std::string(field) == "color" ? "per-vertex colours are not converted; the shape keeps its material's colour"
+                                                               : "textures are not converted; the shape keeps its material's colour");
     count(shape);
     Shape prototype;
     prototype.name = name_of(shape);
@@ -170,13 +288,16 @@ class SceneBuilder {
   const std::string& file_;
   GeometryReadContext context_;
   WorldInfoConventions conventions_;
+  std::map<std::string, std::pair<size_t, std::string>> left_out_;  // kind -> count, why
+  std::vector<std::string> left_out_order_;
   static constexpr long max_expanded = 1000000;
   long expanded_ = 0;
 };
 
 }  // namespace
 
-Scene nodes_to_scene(const NodeDocument& document, const std::string& name_for_errors, bool homogeneous_control_points) {
+SceneFromNodes nodes_to_scene(const NodeDocument& document, const std::string& name_for_errors,
+                              bool homogeneous_control_points) {
   return SceneBuilder(document, name_for_errors, homogeneous_control_points).build();
 }
 

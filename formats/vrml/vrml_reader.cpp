@@ -2,13 +2,15 @@
 
 #include "formats/common/file_io.hpp"
 #include "formats/common/gzip.hpp"
+#include "formats/vrml/animation_at_rest.hpp"
 #include "formats/vrml/classic_parser.hpp"
 #include "formats/vrml/nodes_to_scene.hpp"
 #include "formats/vrml/xml_parser.hpp"
 
 namespace cadnurbs {
 
-Scene parse_vrml(const std::string& bytes, const std::string& name_for_errors, bool homogeneous_control_points) {
+SceneFromNodes parse_vrml_scene(const std::string& bytes, const std::string& name_for_errors,
+                                bool homogeneous_control_points) {
   // .wrz, .wrl.gz, .x3dvz, .x3dz, or any of the plain names holding gzip'd text, as browsers accept.
   const std::string unpacked = is_gzip(bytes) ? gunzip(bytes, name_for_errors) : std::string();
   const std::string& text = is_gzip(bytes) ? unpacked : bytes;
@@ -17,11 +19,22 @@ Scene parse_vrml(const std::string& bytes, const std::string& name_for_errors, b
   NodeDocument document;
   if (first != std::string::npos && text[first] == '<') document = parse_xml(text, name_for_errors);
   else document = parse_classic(start ? text.substr(start) : text, name_for_errors);
-  return nodes_to_scene(document, name_for_errors, homogeneous_control_points);
+  std::vector<std::string> rest_notes = apply_animation_at_rest(document);
+  SceneFromNodes out = nodes_to_scene(document, name_for_errors, homogeneous_control_points);
+  out.notes.insert(out.notes.begin(), rest_notes.begin(), rest_notes.end());
+  return out;
+}
+
+Scene parse_vrml(const std::string& bytes, const std::string& name_for_errors, bool homogeneous_control_points) {
+  return parse_vrml_scene(bytes, name_for_errors, homogeneous_control_points).scene;
 }
 
 Scene read_vrml(const std::string& path, bool homogeneous_control_points) {
   return parse_vrml(read_file(path), path, homogeneous_control_points);
+}
+
+SceneFromNodes read_vrml_scene(const std::string& path, bool homogeneous_control_points) {
+  return parse_vrml_scene(read_file(path), path, homogeneous_control_points);
 }
 
 }  // namespace cadnurbs

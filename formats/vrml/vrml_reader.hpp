@@ -1,11 +1,12 @@
 #pragma once
-// Reads what the VRML writer writes (VRML97, X3D classic, X3D XML; told apart by content, not by
-// extension) back into a Scene, and simple NURBS files of other tools that stay inside the same subset
-// (nodes_to_scene.hpp, nodes_to_geometry.hpp, node_schema.hpp). Not a general VRML reader: anything
-// outside the subset is refused with the node and line named.
+// Reads VRML97 and X3D files (classic or XML encoding; told apart by content, not by extension) into a
+// Scene: whole scene graphs of any node of the standards (node_schema.hpp), PROTO and EXTERNPROTO
+// instances, Scripts and ROUTEs, taken at rest (nodes_to_scene.hpp says what becomes what, and what is
+// left out with a note per kind); the geometry as nodes_to_geometry.hpp reads it.
 #include <string>
 
 #include "core/scene.hpp"
+#include "formats/vrml/nodes_to_scene.hpp"
 
 namespace cadnurbs {
 
@@ -15,7 +16,12 @@ namespace cadnurbs {
 // gzip data.
 Scene parse_vrml(const std::string& bytes, const std::string& name_for_errors, bool homogeneous_control_points = true);
 
+// parse_vrml with the notes of what was left out (SceneFromNodes::notes).
+SceneFromNodes parse_vrml_scene(const std::string& bytes, const std::string& name_for_errors,
+                                bool homogeneous_control_points = true);
+
 // parse_vrml of the file at `path`; also throws FileError when it cannot be read.
 Scene read_vrml(const std::string& path, bool homogeneous_control_points = true);
+SceneFromNodes read_vrml_scene(const std::string& path, bool homogeneous_control_points = true);
 
 }  // namespace cadnurbs

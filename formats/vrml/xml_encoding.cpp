@@ -68,6 +68,11 @@ class XmlWriter {
     } else if (const auto* strings = std::get_if<MFString>(&v)) {
       for (size_t i = 0; i < strings->values.size(); ++i)
         out_ += (i ? " " : "") + xml_escaped(quoted_string(strings->values[i]));
+    } else if (const auto* words = std::get_if<FieldWords>(&v)) {
+      for (size_t i = 0; i < words->words.size(); ++i) {
+        const std::string& w = words->words[i];
+        out_ += (i ? " " : "") + (w == "TRUE" ? std::string("true") : w == "FALSE" ? std::string("false") : w);
+      }
     } else {
       append_numeric_value(out_, v, field.precision);
     }

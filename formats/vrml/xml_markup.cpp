@@ -69,8 +69,9 @@ class XmlReader {
     while (position_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[position_]))) advance(1);
   }
 
-  // Declarations, processing instructions, comments, DOCTYPE and text between elements.
-  void skip_misc() {
+  // Declarations, processing instructions, comments, DOCTYPE and text between elements; the text of
+  // CDATA sections is appended to `cdata` when given.
+  void skip_misc(std::string* cdata = nullptr) {
     for (;;) {
       skip_space();
       if (at("<?")) {
@@ -78,7 +79,9 @@ class XmlReader {
       } else if (at("<!--")) {
         skip_to("-->", "comment");
       } else if (at("<![CDATA[")) {
-        fail("CDATA sections (scripts) are outside the subset cadnurbs reads");
+        const size_t start = position_ + 9;
+        skip_to("]]>", "CDATA section");
+        if (cdata) cdata->append(text_, start, position_ - 3 - start);
       } else if (at("<!")) {
         int depth = 0;
         while (position_ < text_.size() && !(text_[position_] == '>' && depth == 0)) {
@@ -180,7 +183,7 @@ class XmlReader {
       e.attributes.push_back(std::move(a));
     }
     for (;;) {
-      skip_misc();
+      skip_misc(&e.cdata);
       if (position_ >= text_.size()) fail("element <" + e.name + "> is never closed", e.line);
       if (at("</")) {
         advance(2);

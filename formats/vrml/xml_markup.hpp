@@ -1,8 +1,8 @@
 #pragma once
 // A small XML reader for what X3D files use: the XML declaration, processing instructions, DOCTYPE (with
 // an internal subset), comments, elements with single- or double-quoted attributes, the five named
-// entities and numeric character references. Character data between elements is ignored; CDATA
-// sections are refused. Not a general XML parser (no namespaces, no entity declarations).
+// entities and numeric character references. Character data between elements is ignored;
+// the text of CDATA sections (a Script's source) is kept. Not a general XML parser (no namespaces, no entity declarations).
 #include <string>
 #include <vector>
 
@@ -17,6 +17,7 @@ struct XmlElement {
   std::string name;
   std::vector<XmlAttribute> attributes;
   std::vector<XmlElement> children;
+  std::string cdata;  // the text of the CDATA sections among its children
   int line = 0;
   size_t begin = 0, end = 0;  // the element's bytes in the text, from '<' to past its closing '>'
 

@@ -1,9 +1,11 @@
-// Files written by other programs (shared/corpus/vrml): the simple NURBS ones read, with their counts
-// taken by hand from the file text; the others are refused with one line naming node and line.
+// Files written by other programs (shared/corpus/vrml), read with their counts taken by hand from the
+// file text.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "core/bounding_box.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 
@@ -97,27 +99,72 @@ TEST(VrmlCorpus, WhiteDuneDoor) {
   EXPECT_EQ(c.trim_control_points, 5 + 9 + 9);
 }
 
-// Files outside the subset: one line, the file, the line and the node.
-void expect_refused(const std::string& file, const std::string& message) {
-  try {
-    read_vrml(corpus + file);
-    FAIL() << file << " was read";
-  } catch (const FileError& e) {
-    EXPECT_EQ(std::string(e.what()), corpus + file + ": " + message);
-  }
+// Whole scenes from white_dune: read at rest; what has no place in a Scene is named, one note per kind.
+SceneFromNodes read_whole(const std::string& file) { return read_vrml_scene(corpus + file); }
+
+bool has_note(const SceneFromNodes& read, const std::string& note) {
+  return std::find(read.notes.begin(), read.notes.end(), note) != read.notes.end();
 }
 
-TEST(VrmlCorpus, FilesOutsideTheSubsetAreRefusedByNodeAndLine) {
-  // testall.wrl: everything up to line 325 is inside the subset (EXTERNPROTOs skipped, NurbsGroup read as
-  // a group); "CoordinateDeformer" at line 325 is not.
-  expect_refused("testall.wrl", "line 325: unsupported node CoordinateDeformer (outside the VRML97 subset cadnurbs reads)");
-  expect_refused("fish.wrl", "line 278: unsupported node CoordinateInterpolator (outside the VRML97 subset cadnurbs reads)");
+TEST(VrmlCorpus, WhiteDuneFishIsReadAtTheFirstFrameOfItsAnimation) {
+  // fish.wrl: 3 NurbsSurface (9 x 6 = 54, 4 x 4, 4 x 4 points) and 4 Spheres (eyes), each read as the
+  // exact 9 x 5 rational sphere. Each NurbsSurface's controlPoint is replaced on every frame by a
+  // CoordinateInterpolator a looping TimeSensor drives; the file's own first control point of the body
+  // is 1075711066505216 (line 89). At rest it is the first key set: (0 0 -2.564630), and the fish
+  // stays within a few units.
+  const SceneFromNodes read = read_whole("fish.wrl");
+  const SceneCounts c = count_entities(read.scene);
+  EXPECT_EQ(c.surfaces, 7);
+  EXPECT_EQ(c.control_points, 54 + 16 + 16 + 4 * 45);
+  const Shape* body = nullptr;
+  for_each_shape(read.scene, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
+    if (std::get<TrimmedSurface>(shape.geometry).surface.points.size() == 54) body = &shape;
+  });
+  ASSERT_NE(body, nullptr);
+  const auto& surface = std::get<TrimmedSurface>(body->geometry).surface;
+  EXPECT_LE((surface.points[0] - Eigen::Vector3d(0, 0, -2.564630)).norm(), 1e-12);
+  EXPECT_LT(scene_bounding_box(read.scene).diagonal().norm(), 20.0);
+  EXPECT_EQ(read.notes, (std::vector<std::string>{
+                            "3 CoordinateInterpolator routed to NurbsSurface.controlPoint: taken at the first key of its looping animation (fraction 0)",
+                            "3 CoordinateInterpolator left out: animation and interaction are not converted: the scene is taken at rest",
+                            "3 TimeSensor left out: animation and interaction are not converted: the scene is taken at rest",
+                            "1 CurveAnimation (PROTO) left out: PROTO instances are not expanded",
+                            "9 ROUTE left out: animation and interaction are not converted: the scene is taken at rest"}));
 }
 
-TEST(VrmlCorpus, LargeFilesFailFastWithOneLine) {
-  // The robots texture their shapes (Appearance.texture, outside the subset) long before their PROTOs.
-  expect_refused("robot_jme2.x3dv", "line 135: Appearance has no field texture in the subset cadnurbs reads");
-  expect_refused("robot_opengl.x3dv", "line 359: Appearance has no field texture in the subset cadnurbs reads");
+TEST(VrmlCorpus, WhiteDuneTestallReadsEveryAmendmentNode) {
+  // testall.wrl: a NurbsCurve of 5 points; a NurbsGroup holding a 4 x 4 NurbsSurface; a TrimmedSurface
+  // (4 x 4) whose one Contour2D holds an empty NurbsCurve2D and an empty Polyline2D: it trims nothing. An
+  // empty CoordinateDeformer (deforms nothing, holds nothing), an empty NurbsPositionInterpolator and an
+  // InlineLoadControl of a file that is not there.
+  const SceneFromNodes read = read_whole("testall.wrl");
+  const SceneCounts c = count_entities(read.scene);
+  EXPECT_EQ(c.curves, 1);
+  EXPECT_EQ(c.surfaces, 2);
+  EXPECT_EQ(c.trim_loops, 0);
+  EXPECT_EQ(c.control_points, 5 + 16 + 16);
+  EXPECT_EQ(read.notes, (std::vector<std::string>{
+                            "1 NurbsPositionInterpolator left out: animation and interaction are not converted: the scene is taken at rest",
+                            "1 InlineLoadControl left out: the url is another file, not followed"}));
+}
+
+TEST(VrmlCorpus, WhiteDuneRobotsAreReadWhole) {
+  // robot_jme2.x3dv: 19 NurbsPatchSurface and 11 Spheres in the text; the LOD's second level is a
+  // Sphere, and the first (most detailed) level is the one read: 19 + 10 surfaces.
+  const SceneFromNodes jme2 = read_whole("robot_jme2.x3dv");
+  EXPECT_EQ(count_entities(jme2.scene).surfaces, 29);
+  EXPECT_TRUE(has_note(jme2, "4 CoordinateInterpolator routed to Coordinate.point: taken at the first key of its looping animation (fraction 0)"));
+  EXPECT_TRUE(has_note(jme2, "3 Text left out: geometry without a NURBS or mesh form in cadnurbs"));
+  EXPECT_TRUE(has_note(jme2, "1 SuperShape (PROTO) left out: PROTO instances are not expanded"));
+  EXPECT_TRUE(has_note(jme2, "40 ROUTE left out: animation and interaction are not converted: the scene is taken at rest"));
+  // robot_opengl.x3dv (HAnim, Switches, Scripts): 27 NurbsPatchSurface and 11 Spheres in the text; 4
+  // NurbsPatchSurface lie under the Transform of line 12540, scaled 0 0 0 (the animation grows it):
+  // 27 + 11 - 4.
+  const SceneFromNodes opengl = read_whole("robot_opengl.x3dv");
+  EXPECT_EQ(count_entities(opengl.scene).surfaces, 34);
+  EXPECT_TRUE(has_note(opengl, "1 Transform scaled to nothing left out: it draws nothing at rest; its children are left out with it"));
+  EXPECT_TRUE(has_note(opengl, "4 Script left out: animation and interaction are not converted: the scene is taken at rest"));
+  EXPECT_TRUE(has_note(opengl, "86 ROUTE left out: animation and interaction are not converted: the scene is taken at rest"));
 }
 
 }  // namespace

@@ -60,21 +60,26 @@ TEST(VrmlReader, WorldInfoGivesUnitAndConvention) {
 TEST(VrmlReader, ParseErrorsNameTheLine) {
   EXPECT_EQ(error_of("#VRML V1.0 ascii\n"),
             "t.x3dv: line 1: not a VRML97 (#VRML V2.0 utf8) or X3D classic (#X3D V3.x utf8) header");
-  EXPECT_EQ(error_of(x3d_header + "\n\nTransform { children [\n  Shape { geometry Sphere { } }\n] }\n"),
-            "t.x3dv: line 6: unsupported node Sphere (outside the X3D subset cadnurbs reads)");
+  EXPECT_EQ(error_of(x3d_header + "\n\nTransform { children [\n  Shape { geometry Spere { } }\n] }\n"),
+            "t.x3dv: line 6: unknown node Spere (neither a X3D node nor a PROTO declared before it)");
   EXPECT_EQ(error_of(x3d_header + "Transform {\n  translation 1 2\n}\n"),
             "t.x3dv: line 5: field translation: expected a number, found '}'");
   EXPECT_EQ(error_of(x3d_header + "Transform {\n  translate 1 2 3\n}\n"),
-            "t.x3dv: line 4: Transform has no field translate in the subset cadnurbs reads");
+            "t.x3dv: line 4: Transform has no field translate");
   EXPECT_EQ(error_of(x3d_header + "Shape {\n geometry USE Nowhere\n}\n"),
             "t.x3dv: line 4: USE Nowhere before any DEF Nowhere");
   EXPECT_EQ(error_of(x3d_header + "Group {\n children [\n"), "t.x3dv: line 4: field children: '[' is never closed");
   EXPECT_EQ(error_of(x3d_header + "Transform { scale 1 x 1 }\n"),
             "t.x3dv: line 3: field scale: expected a number, found 'x'");
-  EXPECT_EQ(error_of(x3d_header + "ROUTE a.b TO c.d\n"), "t.x3dv: line 3: ROUTE statements are outside the subset cadnurbs reads");
+  EXPECT_EQ(error_of(x3d_header + "ROUTE a.b FROM c.d\n"), "t.x3dv: line 3: expected TO in a ROUTE, found 'FROM'");
+  EXPECT_EQ(error_of(x3d_header + "ROUTE ab TO c.d\n"), "t.x3dv: line 3: expected a ROUTE's source as NAME.FIELD, found 'ab'");
+  EXPECT_EQ(error_of(x3d_header + "UNIT length km 1000\n"),
+            "t.x3dv: line 3: UNIT statements are not read: they change the units of the numbers");
+  EXPECT_EQ(error_of(x3d_header + "TimeSensor { fraction_changed 0.5 }\n"),
+            "t.x3dv: line 3: field fraction_changed of TimeSensor is an event: it has no value");
   EXPECT_EQ(error_of(x3d_header + "WorldInfo { title \"open\n\n"), "t.x3dv: line 3: string is not terminated");
   EXPECT_EQ(error_of("#VRML V2.0 utf8\nShape { geometry NurbsPatchSurface {} }\n"),
-            "t.x3dv: line 2: unsupported node NurbsPatchSurface (outside the VRML97 subset cadnurbs reads)");
+            "t.x3dv: line 2: unknown node NurbsPatchSurface (neither a VRML97 node nor a PROTO declared before it)");
 }
 
 TEST(VrmlReader, GeometryErrorsNameTheNodeAndLine) {
@@ -100,8 +105,12 @@ TEST(VrmlReader, GeometryErrorsNameTheNodeAndLine) {
 }
 
 TEST(VrmlReader, XmlErrorsNameTheLine) {
-  EXPECT_EQ(error_of("<?xml version='1.0'?>\n<X3D>\n<Scene>\n<Shape>\n<Sphere/>\n</Shape>\n</Scene>\n</X3D>\n"),
-            "t.x3dv: line 5: unsupported node Sphere (outside the X3D subset cadnurbs reads)");
+  EXPECT_EQ(error_of("<?xml version='1.0'?>\n<X3D>\n<Scene>\n<Shape>\n<Spere/>\n</Shape>\n</Scene>\n</X3D>\n"),
+            "t.x3dv: line 5: unknown node Spere (not an X3D node; a PROTO is used by <ProtoInstance>)");
+  EXPECT_EQ(error_of("<X3D>\n<Scene>\n<ProtoInstance name='P'/>\n</Scene>\n</X3D>\n"),
+            "t.x3dv: line 3: ProtoInstance of P before its declaration");
+  EXPECT_EQ(error_of("<X3D>\n<head><unit category='length' name='km' conversionFactor='1000'/></head>\n</X3D>\n"),
+            "t.x3dv: line 2: <unit> statements are not read: they change the units of the numbers");
   EXPECT_EQ(error_of("<X3D>\n<Scene>\n<Transform translation='1 2'/>\n</Scene>\n</X3D>\n"),
             "t.x3dv: line 3: field translation needs 3 numbers");
   EXPECT_EQ(error_of("<X3D>\n<Scene>\n<Group>\n</Scene>\n</X3D>\n"), "t.x3dv: line 4: </Scene> closes <Group> of line 3");
