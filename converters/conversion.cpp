@@ -8,6 +8,8 @@
 #include "core/number_format.hpp"
 #include "core/world_scale.hpp"
 #include "formats/common/file_io.hpp"
+#include "formats/common/gzip.hpp"
+#include "formats/vrml/scene_graph_rewrite.hpp"
 #include "formats/vrml/viewpoint.hpp"
 
 namespace cadnurbs {
@@ -63,6 +65,37 @@ void check_request(const ConversionRequest& request) {
   if (request.simplify > 0 && writes_mesh(request, output)) throw UsageError("--simplify applies to NURBS output only");
 }
 
+bool keeps_scene_graph(const ConversionRequest& request) {
+  const FileFormat& in = request.input_format ? *request.input_format : input_format(request.input);
+  const FileFormat& out = output_format(request.output);
+  return vrml_text_form(in) && vrml_text_form(out) && !request.mesh && request.steps == 0 && request.deviation == 0 &&
+         request.simplify == 0 && !request.unit && request.precision == 0;
+}
+
+namespace {
+
+// The input file's scene graph in the output's encoding; the Scene read from it only counts.
+ConversionResult write_scene_graph(const ConversionRequest& request, const Scene& scene, const ConversionLog& log) {
+  const VrmlTextForm form = *vrml_text_form(output_format(request.output));
+  VrmlWriteOptions options;
+  options.encoding = form.encoding;
+  options.self_contained = request.self_contained;
+  options.pretty = request.pretty;
+  const RewrittenSceneGraph graph = rewrite_scene_graph(read_file(request.input), request.input, options);
+  write_file_atomically(request.output, form.gzipped ? gzip(graph.text) : graph.text);
+  if (form.encoding == VrmlEncoding::vrml97 && !options.self_contained)
+    write_nurbs_protos_beside(request.output, options.protos_url);
+  ConversionResult result;
+  result.counts = count_entities(scene);
+  result.scene_graph = ConversionResult::SceneGraph{graph.nodes, graph.kinds, graph.routes, graph.protos, graph.notes};
+  result.deviation_bound = 0;
+  result.deviation_basis = "bound: the numbers are written as read";
+  tell(log.written, scene, result);
+  return result;
+}
+
+}  // namespace
+
 LoadedInput load_input(const ConversionRequest& request) {
   const FileFormat& format = request.input_format ? *request.input_format : input_format(request.input);
   LoadedInput input;
@@ -92,6 +125,7 @@ ConversionResult convert_loaded(const ConversionRequest& request, const LoadedIn
   const Scene& scene = input.scene;
   if (!holds_geometry(count_entities(scene))) refuse_empty(request.input, input.loaded, "no geometry to write");
   const double diagonal = checked_diagonal(scene, request.input);
+  if (keeps_scene_graph(request)) return write_scene_graph(request, scene, log);
   const bool mesh = writes_mesh(request, format);
   const double tolerance = written_tolerance(scene, request.precision);
   std::optional<Scene> simplified;

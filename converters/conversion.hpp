@@ -83,12 +83,23 @@ struct ConversionResult {
     TessellationReport report;
   };
   std::optional<Mesh> mesh;
+  // The input's whole VRML/X3D scene graph, when it was kept (keeps_scene_graph).
+  struct SceneGraph {
+    size_t nodes = 0, kinds = 0, routes = 0, protos = 0;
+    std::vector<std::string> notes;  // what the translation between VRML97 and X3D dropped or declared
+  };
+  std::optional<SceneGraph> scene_graph;
   // How far the written file can be from the input's surfaces, a bound, and how it is known: the
   // tessellator's certificate (plus the quantisation budget), the compact rewrites' and the written
   // precision's, the simplification's certificate. NaN where no bound is known (--steps, STEP/IGES out).
   double deviation_bound = std::numeric_limits<double>::quiet_NaN();
   std::string deviation_basis;
 };
+
+// Whether the conversion writes the input's whole scene graph again (scene_graph_rewrite.hpp) rather
+// than the Scene: input and output are both VRML/X3D and nothing asked changes geometry (no --mesh,
+// --steps, --deviation, --simplify, --units or --precision).
+bool keeps_scene_graph(const ConversionRequest& request);
 
 // Converts `input` (load_input of the same request) to request.output: the certified mesh, the uniform
 // tessellation, the simplified, compact or exact NURBS, as the request and the output format say, written

@@ -186,8 +186,12 @@ int run_convert(const std::vector<std::string>& args, const CommandContext& cont
   const BrepTranslation& loaded = input.loaded;
   // A part whose size cannot be used fails with its one line, before the reader's notes and repairs.
   checked_diagonal(input.scene, in);
-  for (const auto& line : loaded.notes) std::cerr << in << ": " << line << "\n";
-  for (const auto& line : loaded.repairs) std::cerr << in << ": " << line << "\n";
+  // A kept scene graph is written as read: what the Scene leaves out is not left out of it, and a face
+  // the Scene repairs or leaves out stays as the file wrote it.
+  const bool kept = keeps_scene_graph(request);
+  if (!kept)
+    for (const auto& line : loaded.notes) std::cerr << in << ": " << line << "\n";
+  for (const auto& line : loaded.repairs) std::cerr << in << ": " << (kept ? "kept as written: " : "") << line << "\n";
   for (const auto& f : loaded.fallbacks)
     std::cerr << in << ": " << f.node << " face " << f.face_index << " (" << f.surface_type
               << ") written as a mesh: " << f.reason << "\n";
@@ -201,6 +205,12 @@ int run_convert(const std::vector<std::string>& args, const CommandContext& cont
               << upper_extension(out) << " holds triangles only\n";
   };
   const ConversionResult result = convert_loaded(request, input, log);
+  if (result.scene_graph) {
+    const auto& g = *result.scene_graph;
+    for (const auto& line : g.notes) std::cerr << out << ": " << line << "\n";
+    std::cout << out << ": the whole scene graph kept: " << g.nodes << " nodes of " << g.kinds << " kinds, " << g.routes
+              << " ROUTEs, " << g.protos << " PROTO declarations\n";
+  }
   const SceneCounts& c = result.counts;
   std::cout << out << ": " << c.surfaces << " NURBS surfaces, " << c.polygon_meshes << " polygon sets ("
             << c.polygons << " polygons), " << c.meshes << " meshes (" << c.mesh_triangles << " triangles"

@@ -17,20 +17,6 @@ bool is_vrml97_nurbs_node(const std::string& type) {
          type == "Polyline2D" || type == "NurbsCurve" || type == "NurbsGroup";
 }
 
-void for_each_node(const NodeDocument& document, const std::function<void(const Node&)>& visit) {
-  std::set<const Node*> seen;
-  std::function<void(const NodePtr&)> walk = [&](const NodePtr& node) {
-    if (!node || !seen.insert(node.get()).second) return;
-    visit(*node);
-    for (const auto& field : node->fields) {
-      if (const auto* sf = std::get_if<SFNode>(&field.value)) walk(sf->node);
-      if (const auto* mf = std::get_if<MFNode>(&field.value))
-        for (const auto& child : mf->nodes) walk(child);
-    }
-  };
-  for (const auto& root : document.roots) walk(root);
-}
-
 // Names of the PROTOs in `protos` that `proto` mentions in its body (a PROTO built on another one).
 std::set<std::string> mentioned_protos(const ProtoDefinition& proto, const std::vector<ProtoDefinition>& protos) {
   std::set<std::string> out;
@@ -61,7 +47,7 @@ std::string proto_declarations(const NodeDocument& document, const ClassicEncodi
   };
   std::set<std::string> used;
   for_each_node(document, [&](const Node& node) {
-    if (!is_vrml97_nurbs_node(node.type)) return;
+    if (node.proto_instance || !is_vrml97_nurbs_node(node.type)) return;
     const ProtoDefinition* proto = find_proto(node.type);
     if (!proto)
       throw std::runtime_error("the NURBS PROTO library has no PROTO " + node.type +
@@ -92,7 +78,26 @@ std::string proto_declarations(const NodeDocument& document, const ClassicEncodi
 
 class ClassicWriter {
  public:
-  ClassicWriter(std::string& out, bool pretty) : out_(out), pretty_(pretty) {}
+  ClassicWriter(std::string& out, bool pretty, VrmlDialect dialect = VrmlDialect::x3d)
+      : out_(out), pretty_(pretty), dialect_(dialect) {}
+
+  // PROTOs, nodes, IMPORT/EXPORT, then ROUTEs (after every DEF they name).
+  void statements(const NodeDocument& document, int depth) {
+    for (const auto& proto : document.protos) proto_declaration(proto, depth);
+    for (const auto& root : document.roots) {
+      indent(depth);
+      node_statement(root, depth);
+      out_ += "\n";
+    }
+    for (const auto& statement : document.imports_exports) {
+      indent(depth);
+      out_ += statement + "\n";
+    }
+    for (const auto& route : document.routes) {
+      indent(depth);
+      out_ += "ROUTE " + route.from_node + "." + route.from_field + " TO " + route.to_node + "." + route.to_field + "\n";
+    }
+  }
 
   void node_statement(const NodePtr& node, int depth) {
     if (!node) {
@@ -108,7 +113,9 @@ class ClassicWriter {
     }
     written_.insert(node.get());
     out_ += node->type;
-    if (node->fields.empty()) {
+    if (!node->declarations.empty() || !node->is_connections.empty()) {
+      whole_node_body(*node, depth);
+    } else if (node->fields.empty()) {
       out_ += " {}";
     } else if (!pretty_ || fits_one_line(*node)) {
       out_ += " {";
@@ -131,6 +138,70 @@ class ClassicWriter {
   }
 
  private:
+  // A node with its own field declarations (Script) or IS connections (in a PROTO body): one item per
+  // line; a declared field with its value or IS connection on the declaration.
+  void whole_node_body(const Node& node, int depth) {
+    out_ += " {\n";
+    auto connection_of = [&](const std::string& field) -> const IsConnection* {
+      for (const auto& c : node.is_connections)
+        if (c.node_field == field) return &c;
+      return nullptr;
+    };
+    std::set<std::string> done;
+    for (const auto& d : node.declarations) {
+      indent(depth + 1);
+      out_ += access_keyword(d.access, dialect_) + " " + d.type_name + " " + d.name;
+      if (const IsConnection* c = connection_of(d.name)) {
+        out_ += " IS " + c->proto_field;
+      } else if (const Field* f = node.find(d.name)) {
+        out_ += " ";
+        value(*f, depth + 1);
+      }
+      out_ += "\n";
+      done.insert(d.name);
+    }
+    for (const auto& field : node.fields) {
+      if (done.count(field.name)) continue;
+      indent(depth + 1);
+      out_ += field.name + " ";
+      value(field, depth + 1);
+      out_ += "\n";
+    }
+    for (const auto& c : node.is_connections) {
+      if (done.count(c.node_field)) continue;
+      indent(depth + 1);
+      out_ += c.node_field + " IS " + c.proto_field + "\n";
+    }
+    indent(depth);
+    out_ += "}";
+  }
+
+  void proto_declaration(const ProtoDeclaration& proto, int depth) {
+    indent(depth);
+    out_ += (proto.external ? "EXTERNPROTO " : "PROTO ") + proto.name + " [\n";
+    for (const auto& d : proto.interface) {
+      indent(depth + 1);
+      out_ += access_keyword(d.access, dialect_) + " " + d.type_name + " " + d.name;
+      if (d.default_value) {
+        out_ += " ";
+        ClassicWriter inner(out_, pretty_, dialect_);  // defaults have their own DEF names
+        inner.value(Field{d.name, *d.default_value, {}, 0}, depth + 1);
+      }
+      out_ += "\n";
+    }
+    indent(depth);
+    if (proto.external) {
+      out_ += "] [";
+      for (size_t i = 0; i < proto.urls.size(); ++i) out_ += (i ? " " : "") + quoted_string(proto.urls[i]);
+      out_ += "]\n";
+      return;
+    }
+    out_ += "] {\n";
+    if (proto.body) ClassicWriter(out_, pretty_, dialect_).statements(*proto.body, depth + 1);
+    indent(depth);
+    out_ += "}\n";
+  }
+
   // Small nodes (Appearance, Material, a short polyline) read best on one line.
   bool fits_one_line(const Node& node) const {
     for (const auto& field : node.fields) {
@@ -188,6 +259,7 @@ class ClassicWriter {
 
   std::string& out_;
   bool pretty_;
+  VrmlDialect dialect_;
   std::set<const Node*> written_;
 };
 
@@ -205,13 +277,9 @@ std::string classic_encoding(const NodeDocument& document, const ClassicEncoding
     out += "#VRML V2.0 utf8\n";
     out += proto_declarations(document, options);
   } else {
-    out += "#X3D V3.3 utf8\nPROFILE Interchange\nCOMPONENT NURBS:4\n";
+    out += "#X3D V3.3 utf8\nPROFILE " + document.profile + "\nCOMPONENT NURBS:4\n";
   }
-  ClassicWriter writer(out, options.pretty);
-  for (const auto& root : document.roots) {
-    writer.node_statement(root, 0);
-    out += "\n";
-  }
+  ClassicWriter(out, options.pretty, document.dialect).statements(document, 0);
   return out;
 }
 

@@ -1,5 +1,7 @@
 #include "formats/vrml/node_graph.hpp"
 
+#include <set>
+
 namespace cadnurbs {
 
 const Field* Node::find(std::string_view name) const {
@@ -16,6 +18,40 @@ void Node::set(std::string name, FieldValue value, NumberPrecision precision) {
       return;
     }
   fields.push_back(Field{std::move(name), std::move(value), precision, 0});
+}
+
+void for_each_node(const NodeDocument& document, const std::function<void(const Node&)>& visit) {
+  std::set<const Node*> seen;
+  std::function<void(const NodePtr&)> walk;
+  auto walk_value = [&](const FieldValue& value) {
+    if (const auto* sf = std::get_if<SFNode>(&value)) walk(sf->node);
+    if (const auto* mf = std::get_if<MFNode>(&value))
+      for (const auto& child : mf->nodes) walk(child);
+  };
+  walk = [&](const NodePtr& node) {
+    if (!node || !seen.insert(node.get()).second) return;
+    visit(*node);
+    for (const auto& field : node->fields) walk_value(field.value);
+  };
+  std::function<void(const NodeDocument&)> walk_document = [&](const NodeDocument& d) {
+    for (const auto& proto : d.protos) {
+      for (const auto& declaration : proto.interface)
+        if (declaration.default_value) walk_value(*declaration.default_value);
+      if (proto.body) walk_document(*proto.body);
+    }
+    for (const auto& root : d.roots) walk(root);
+  };
+  walk_document(document);
+}
+
+std::string access_keyword(const std::string& access, VrmlDialect dialect) {
+  static const char* const names[4][2] = {{"field", "initializeOnly"},
+                                          {"exposedField", "inputOutput"},
+                                          {"eventIn", "inputOnly"},
+                                          {"eventOut", "outputOnly"}};
+  for (const auto& pair : names)
+    if (access == pair[0] || access == pair[1]) return pair[dialect == VrmlDialect::vrml97 ? 0 : 1];
+  return access;
 }
 
 NodePtr make_node(std::string type, std::string def_name) {

@@ -2,6 +2,7 @@
 // A small generic VRML/X3D node graph: the one form between the Scene mapping and the text encodings,
 // so that Scene <-> nodes is written once and VRML97, X3D classic and X3D XML differ only in spelling.
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -111,6 +112,14 @@ struct NodeDocument {
   std::vector<Route> routes;
   std::vector<ProtoDeclaration> protos;
   std::vector<std::string> imports_exports;  // IMPORT / EXPORT statements, as "IMPORT a.b AS c"
+  std::string profile = "Interchange";       // X3D: the profile the writers declare
 };
+
+// Calls `visit` once for every node of the document: its roots' graphs and its PROTOs' bodies and
+// defaults (each node once, however often USE'd).
+void for_each_node(const NodeDocument& document, const std::function<void(const Node&)>& visit);
+
+// The declaration keyword of an access ("exposedField", "inputOutput"...) in `dialect`'s spelling.
+std::string access_keyword(const std::string& access, VrmlDialect dialect);
 
 }  // namespace cadnurbs

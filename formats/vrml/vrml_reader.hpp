@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/scene.hpp"
+#include "formats/vrml/node_graph.hpp"
 #include "formats/vrml/nodes_to_scene.hpp"
 
 namespace cadnurbs {
@@ -15,6 +16,9 @@ namespace cadnurbs {
 // Throws FileError "<name_for_errors>: line N: <reason>", or "<name_for_errors>: <reason>" for damaged
 // gzip data.
 Scene parse_vrml(const std::string& bytes, const std::string& name_for_errors, bool homogeneous_control_points = true);
+
+// The file's node document (no Scene): text or gzip'd text, classic or XML, told apart by content.
+NodeDocument parse_vrml_document(const std::string& bytes, const std::string& name_for_errors);
 
 // parse_vrml with the notes of what was left out (SceneFromNodes::notes).
 SceneFromNodes parse_vrml_scene(const std::string& bytes, const std::string& name_for_errors,

@@ -102,20 +102,56 @@ TEST_F(Cli, NothingToWriteFailsNamingWhatTheInputHeld) {
 // the file converts to every output (it was refused: "leaves the surface's domain by 10 of its size").
 // In X_ITE the mesh's silhouette differs from the original's on 0.00056 of a 400 x 300 picture.
 TEST_F(Cli, LoopsOutsideTheDomainOfVrmlFilesAreCutAsGluDrawsThem) {
+  // To a mesh or .cnb the loops are cut when the file is read, and said; VRML/X3D output keeps the
+  // file's scene graph, loops as written (GLU-based viewers cut them as they draw), and says so.
+  // door.x3dv's 18 nodes of 9 kinds: 2 Transform, Shape, Appearance, Material, NurbsTrimmedSurface and
+  // Coordinate, 3 Contour2D, 2 NurbsCurve2D, 1 ContourPolyline2D; in VRML97 each trimmed surface holds a
+  // NurbsSurface that holds its points: 18 again.
   const std::string door = std::string(CADNURBS_SHARED_DIR) + "/corpus/vrml/door.x3dv";
   for (const std::string output : {"door.x3dv", "door.wrl", "door.stl", "door.cnb"}) {
     const CommandResult r = run("convert " + door + " -o " + path(output));
     EXPECT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(r.err.find(door + ": scene/node 0/shape 0: trimming loop 0 leaves the surface's domain by 10 of its size: "
+    const bool kept = output.ends_with(".x3dv") || output.ends_with(".wrl");
+    const std::string as = kept ? "kept as written: " : "";
+    EXPECT_NE(r.err.find(door + ": " + as + "scene/node 0/shape 0: trimming loop 0 leaves the surface's domain by 10 of its size: "
                                 "cut to the domain, as GLU-based viewers draw it (1 loop left)\n"),
               std::string::npos)
         << r.err;
-    EXPECT_NE(r.err.find(door + ": scene/node 1/shape 0: trimming loop 0 leaves the surface's domain by 0.902 of its "
+    EXPECT_NE(r.err.find(door + ": " + as + "scene/node 1/shape 0: trimming loop 0 leaves the surface's domain by 0.902 of its "
                                 "size: cut to the domain"),
               std::string::npos)
         << r.err;
+    EXPECT_EQ(r.out.find(path(output) + ": the whole scene graph kept: 18 nodes of 9 kinds, 0 ROUTEs, 0 PROTO declarations") !=
+                  std::string::npos,
+              kept)
+        << r.out;
     EXPECT_TRUE(fs::exists(path(output))) << output;
   }
+}
+
+TEST_F(Cli, VrmlToX3dKeepsTheWholeSceneGraphAndAMeshSaysWhatItLeavesOut) {
+  // fish.wrl (white_dune): 3 NURBS surfaces animated by CoordinateInterpolators, 4 spheres, a PROTO'd
+  // CurveAnimation, 9 ROUTEs. To X3D every node and ROUTE is kept; the one ccw FALSE has no X3D form.
+  const std::string fish = std::string(CADNURBS_SHARED_DIR) + "/corpus/vrml/fish.wrl";
+  const CommandResult x3d = run("convert " + fish + " -o " + path("fish.x3d"));
+  ASSERT_EQ(x3d.status, 0) << x3d.err;
+  EXPECT_EQ(x3d.err, path("fish.x3d") + ": 1 NurbsSurface ccw dropped: X3D's NURBS surfaces have no ccw\n");
+  EXPECT_NE(x3d.out.find(path("fish.x3d") + ": the whole scene graph kept: 47 nodes of 11 kinds, 9 ROUTEs, 1 PROTO declarations\n"),
+            std::string::npos)
+      << x3d.out;
+  const std::string text = read_file(path("fish.x3d"));
+  EXPECT_NE(text.find("<ROUTE fromNode='CoordinateInterpolator1' fromField='value_changed' toNode='NurbsSurface1_controlPoint' toField='set_point'/>"),
+            std::string::npos);
+  EXPECT_NE(text.find("<ExternProtoDeclare name='CurveAnimation'"), std::string::npos);
+  // To a mesh, the animation has no place: one line per kind, and the surfaces at the animation's rest.
+  const CommandResult stl = run("convert " + fish + " -o " + path("fish.stl"));
+  ASSERT_EQ(stl.status, 0) << stl.err;
+  EXPECT_NE(stl.err.find(fish + ": 3 CoordinateInterpolator routed to NurbsSurface.controlPoint: taken at the first key of its looping animation (fraction 0)\n"),
+            std::string::npos)
+      << stl.err;
+  EXPECT_NE(stl.err.find(fish + ": 9 ROUTE left out: animation and interaction are not converted: the scene is taken at rest\n"),
+            std::string::npos)
+      << stl.err;
 }
 
 TEST_F(Cli, UnknownOptionIsAUsageError) {

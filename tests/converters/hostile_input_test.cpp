@@ -167,7 +167,14 @@ TEST_F(HostileInput, ARefusedFaceIsLeftOutNamingTheInputAndTheFace) {
                               "  trimmingContour [ Contour2D { children [ ContourPolyline2D { controlPoint [.1 .3, .9 .9, .9 .1, .1 .7, .1 .3] } ] } ]\n} }\n";
   const std::string good = "Shape { geometry NurbsPatchSurface {\n" + patch + "} }\n";
   std::ofstream(path("mixed.x3dv")) << head << beside << bow_tie << good;
-  CommandResult r = run("convert " + path("mixed.x3dv") + " -o " + path("out.x3dv"));
+  // To X3D the scene graph is kept as written: the faults are named, the faces stay.
+  CommandResult kept = run("convert " + path("mixed.x3dv") + " -o " + path("out.x3dv"));
+  EXPECT_EQ(kept.status, 0) << kept.err;
+  EXPECT_NE(kept.err.find(path("mixed.x3dv") + ": kept as written: scene/shape 1: trimming loop 0 crosses itself"), std::string::npos)
+      << kept.err;
+  // 3 Shapes, 2 NurbsTrimmedSurfaces, a NurbsPatchSurface, 3 Coordinates, 2 Contour2D, 2 ContourPolyline2D.
+  EXPECT_NE(kept.out.find("the whole scene graph kept: 13 nodes of 6 kinds"), std::string::npos) << kept.out;
+  CommandResult r = run("convert " + path("mixed.x3dv") + " -o " + path("out.cnb"));
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find(path("mixed.x3dv") + ": scene/shape 0: no trimming loop meets the surface's domain: the face has no area: dropped\n"),
             std::string::npos)
