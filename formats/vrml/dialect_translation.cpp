@@ -15,12 +15,12 @@ namespace {
 // The amendment's nodes that the VRML97 writer declares from the cadnurbs PROTO library.
 bool library_declares(const std::string& type) {
   return type == "NurbsSurface" || type == "TrimmedSurface" || type == "Contour2D" || type == "NurbsCurve2D" ||
-         type == "Polyline2D" || type == "NurbsGroup";
+         type == "Polyline2D" || type == "NurbsGroup" || type == "NurbsCurve";
 }
 
 // The amendment's nodes that X3D has in another spelling (or as Group / Inline).
 bool x3d_has_counterpart(const std::string& type) {
-  return library_declares(type) || type == "NurbsCurve" || type == "NurbsTextureSurface" ||
+  return library_declares(type) || type == "NurbsTextureSurface" ||
          type == "NurbsPositionInterpolator" || type == "InlineLoadControl";
 }
 

@@ -298,9 +298,9 @@ TEST_F(Report, ABadInputIsListedAndTheOthersAreStillReported) {
   EXPECT_NE(good_row.find(",bound"), std::string::npos) << good_row;
 }
 
-// nurbs_weights.x3dv holds NurbsCurve nodes, which VRML97 cannot take (no PROTO for them yet): the two
-// VRML97 NURBS files and the mesh files are left out, each with a note naming the format, and the rest
-// of the record (X3D NURBS, .cnb, Draco, meshoptimizer) is measured.
+// nurbs_weights.x3dv holds NurbsCurve nodes, which binary STL cannot take: that file is left out with a
+// note naming the format, and the rest of the record (VRML97 and X3D NURBS, since the PROTO library has a
+// NurbsCurve, .cnb, Draco, meshoptimizer) is measured.
 TEST_F(Report, AFormatThatCannotHoldThePartCostsItsRepresentationNotTheRecord) {
   const std::string input = std::string(CADNURBS_SHARED_DIR) + "/corpus/vrml/nurbs_weights.x3dv";
   const CommandResult r = run("report " + input + " --format json -o " + path("r.json"));
@@ -309,10 +309,11 @@ TEST_F(Report, AFormatThatCannotHoldThePartCostsItsRepresentationNotTheRecord) {
   EXPECT_EQ(part["status"], "ok");
   std::vector<std::string> keys;
   for (const auto& rep : part["representations"]) keys.push_back(rep["key"]);
-  EXPECT_EQ(std::count(keys.begin(), keys.end(), "wrl-compact"), 0);
+  EXPECT_EQ(std::count(keys.begin(), keys.end(), "wrl-compact"), 1);
   EXPECT_EQ(std::count(keys.begin(), keys.end(), "x3dv-compact"), 1);
+  EXPECT_EQ(std::count(keys.begin(), keys.end(), "draco"), 1);
   const std::string warnings = part["warnings"].dump();
-  EXPECT_NE(warnings.find("VRML97 NURBS, compact: not measured: the NURBS PROTO library has no PROTO NurbsCurve"),
+  EXPECT_NE(warnings.find("binary STL at D: not measured: shape '' is a NURBS curve; this format holds triangles only"),
             std::string::npos) << warnings;
   EXPECT_EQ(warnings.find("cadnurbs-report-"), std::string::npos) << warnings;  // no temporary path
 }

@@ -48,6 +48,10 @@ const expected = {
     'field MFFloat weight []', 'field SFInt32 tessellation 0',
   ],
   Polyline2D: ['field MFVec2f point []'],
+  NurbsCurve: [
+    'field MFVec3f controlPoint []', 'field MFFloat knot []', 'field SFInt32 order 3',
+    'field MFFloat weight []', 'field SFInt32 tessellation 0',
+  ],
   NurbsPositionInterpolator: [
     'eventIn SFFloat set_fraction', 'field SFInt32 dimension 0', 'field MFFloat knot []',
     'field SFInt32 order 3', 'field MFVec3f keyValue []', 'field MFFloat keyWeight []',
@@ -389,6 +393,29 @@ function edgeCounts(tris) {
   const cubic = { order: 4, knot: fl([0, 0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1, 1]), keyValue: [[0, 0, 0], [1, 2, 0], [2, 2, 0], [3, 0, 0], [4, 1, 0], [5, 1, 0], [6, 0, 0]].map(v3), keyWeight: [] };
   const c = at(cubic, [0.5, 1]);
   check('NurbsPositionInterpolator: a knot repeated degree times pins its control point', c[0].x === 3 && c[0].y === 0 && c[1].x === 6, `${JSON.stringify(c)}`);
+}
+
+// ------------------------------------------------------------------ NurbsCurve
+// The curve Script's polyline: a rational quarter circle (controlPoint as w*P) lies on radius 1 at
+// every sample, 12 steps (6 x degree 2) from end to end; X_ITE's getValue() fields give the same points.
+{
+  const curveScript = scriptOf('NurbsCurve');
+  const quarter = { order: 3, knot: fl([0, 0, 0, 1, 1, 1]), controlPoint: [[1, 0, 0], [W, W, 0], [0, 1, 0]].map(v3), weight: fl([1, W, 1]), tessellation: 0 };
+  const line = (fields) => {
+    const env = { ...sandbox, print: () => {}, coord: {}, ...fields };
+    const names = Object.keys(env);
+    const fn = new Function(...names, 'var coordIndex_changed = null;\n' + curveScript + '\ninitialize();\nreturn coordIndex_changed;');
+    const index = fn(...names.map((n) => env[n]));
+    return { points: env.coord.point ?? [], index: index ?? [] };
+  };
+  const a = line(quarter);
+  const radial = Math.max(...a.points.map((p) => Math.abs(Math.hypot(p.x, p.y) - 1)));
+  check('NurbsCurve: a rational quarter circle lies on radius 1', a.points.length === 13 && radial < 1e-6,
+    `${a.points.length} points, max error ${radial.toExponential(2)}`);
+  check('NurbsCurve: one polyline through every point', a.index.length === 14 && a.index[13] === -1 && a.index[12] === 12);
+  check('NurbsCurve: ends at the end points', a.points[0].x === 1 && Math.abs(a.points[12].y - 1) < 1e-6);
+  const b = line({ ...quarter, knot: xiteFields(quarter.knot), controlPoint: xiteFields(quarter.controlPoint), weight: xiteFields(quarter.weight) });
+  check('NurbsCurve: X_ITE fast path identical', a.points.every((p, i) => p.x === b.points[i].x && p.y === b.points[i].y));
 }
 
 // ------------------------------------------------------------------ 4. X_ITE fast paths
