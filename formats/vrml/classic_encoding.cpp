@@ -89,9 +89,10 @@ class ClassicWriter {
       node_statement(root, depth);
       out_ += "\n";
     }
-    for (const auto& statement : document.imports_exports) {
+    for (const auto& s : document.imports_exports) {
       indent(depth);
-      out_ += statement + "\n";
+      out_ += s.import ? "IMPORT " + s.inline_def + "." + s.name : "EXPORT " + s.name;
+      out_ += (s.as.empty() ? "" : " AS " + s.as) + "\n";
     }
     for (const auto& route : document.routes) {
       indent(depth);

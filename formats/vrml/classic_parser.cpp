@@ -146,12 +146,15 @@ class ClassicParser {
   // IMPORT inline.name [AS name] / EXPORT name [AS name].
   void import_export(const std::string& word) {
     next();
-    std::string text = word + " " + expect(Kind::word, "a name after " + word).text;
+    ImportExport statement;
+    statement.import = word == "IMPORT";
+    if (statement.import) std::tie(statement.inline_def, statement.name) = dotted("an IMPORT's Inline.name");
+    else statement.name = expect(Kind::word, "a name after EXPORT").text;
     if (peek().kind == Kind::word && peek().text == "AS") {
       next();
-      text += " AS " + expect(Kind::word, "a name after AS").text;
+      statement.as = expect(Kind::word, "a name after AS").text;
     }
-    document_.imports_exports.push_back(std::move(text));
+    document_.imports_exports.push_back(std::move(statement));
   }
 
   // "IS <proto field>" in a PROTO body, instead of a value: the proto field's name, else nothing.

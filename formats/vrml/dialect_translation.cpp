@@ -62,6 +62,10 @@ class Translator {
       move_route_end(route.to_node, route.to_field);
     }
     declarations(d);
+    if (target_ == VrmlDialect::vrml97 && !d.imports_exports.empty()) {
+      for (size_t i = 0; i < d.imports_exports.size(); ++i) note("IMPORT/EXPORT dropped: VRML97 has none");
+      d.imports_exports.clear();
+    }
     d.dialect = target_;
     std::swap(moves, moves_);
   }

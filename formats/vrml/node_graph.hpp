@@ -96,6 +96,14 @@ struct Route {
 
 struct NodeDocument;
 
+// IMPORT inline_def.name [AS as] (import), or EXPORT name [AS as].
+struct ImportExport {
+  bool import = false;
+  std::string inline_def;  // IMPORT only: the DEF of the Inline
+  std::string name;        // IMPORT: the name the Inline's file EXPORTs; EXPORT: a local DEF
+  std::string as;          // empty: not given
+};
+
 // A PROTO or EXTERNPROTO declaration.
 struct ProtoDeclaration {
   std::string name;
@@ -111,7 +119,7 @@ struct NodeDocument {
   std::vector<NodePtr> roots;  // top-level nodes in file order
   std::vector<Route> routes;
   std::vector<ProtoDeclaration> protos;
-  std::vector<std::string> imports_exports;  // IMPORT / EXPORT statements, as "IMPORT a.b AS c"
+  std::vector<ImportExport> imports_exports;
   std::string profile = "Interchange";       // X3D: the profile the writers declare
 };
 

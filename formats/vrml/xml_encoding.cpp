@@ -1,7 +1,6 @@
 #include "formats/vrml/xml_encoding.hpp"
 
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
 #include "formats/vrml/node_schema.hpp"
@@ -19,20 +18,13 @@ class XmlWriter {
   void statements(const NodeDocument& document, int depth) {
     for (const auto& proto : document.protos) proto_declaration(proto, depth);
     for (const auto& root : document.roots) element(root, "", depth);
-    for (const auto& statement : document.imports_exports) {
-      // "IMPORT inline.name AS local" / "EXPORT local AS name"
-      std::istringstream words(statement);
-      std::string keyword, what, as, alias;
-      words >> keyword >> what >> as >> alias;
+    for (const auto& s : document.imports_exports) {
       indent(depth);
-      if (keyword == "IMPORT") {
-        const size_t dot = what.find('.');
-        out_ += "<IMPORT inlineDEF='" + xml_escaped(what.substr(0, dot)) + "' importedDEF='" +
-                xml_escaped(what.substr(dot + 1)) + "'";
-      } else {
-        out_ += "<EXPORT localDEF='" + xml_escaped(what) + "'";
-      }
-      if (!alias.empty()) out_ += " AS='" + xml_escaped(alias) + "'";
+      if (s.import)
+        out_ += "<IMPORT inlineDEF='" + xml_escaped(s.inline_def) + "' importedDEF='" + xml_escaped(s.name) + "'";
+      else
+        out_ += "<EXPORT localDEF='" + xml_escaped(s.name) + "'";
+      if (!s.as.empty()) out_ += " AS='" + xml_escaped(s.as) + "'";
       out_ += "/>\n";
     }
     for (const auto& r : document.routes) {

@@ -51,16 +51,17 @@ class X3dBuilder {
                                       required(e, "toField"), e.line});
       return true;
     }
-    if (e.name == "IMPORT") {
-      std::string text = "IMPORT " + required(e, "inlineDEF") + "." + required(e, "importedDEF");
-      if (const auto* as = e.attribute("AS")) text += " AS " + as->value;
-      document.imports_exports.push_back(text);
-      return true;
-    }
-    if (e.name == "EXPORT") {
-      std::string text = "EXPORT " + required(e, "localDEF");
-      if (const auto* as = e.attribute("AS")) text += " AS " + as->value;
-      document.imports_exports.push_back(text);
+    if (e.name == "IMPORT" || e.name == "EXPORT") {
+      ImportExport statement;
+      statement.import = e.name == "IMPORT";
+      if (statement.import) {
+        statement.inline_def = required(e, "inlineDEF");
+        statement.name = required(e, "importedDEF");
+      } else {
+        statement.name = required(e, "localDEF");
+      }
+      if (const auto* as = e.attribute("AS")) statement.as = as->value;
+      document.imports_exports.push_back(std::move(statement));
       return true;
     }
     if (e.name == "ProtoDeclare" || e.name == "ExternProtoDeclare") {

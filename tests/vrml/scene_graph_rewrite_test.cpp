@@ -165,5 +165,33 @@ TEST(SceneGraphRewrite, NurbsNodesAndTheirRoutesAreTranslated) {
   EXPECT_EQ(back.routes[1].to_field, "set_controlPoint");
 }
 
+TEST(SceneGraphRewrite, NamesThatAreNoIdentifiersAreRenamedWithTheirRoutes) {
+  // XML takes any string as a DEF; the classic encoding takes identifiers only (found by fuzzing: a
+  // DEF holding NUL bytes).
+  const std::string x3d =
+      "<X3D><Scene>\n<TimeSensor DEF='the clock' loop='true'/>\n<Transform DEF='TRUE'/>\n"
+      "<ROUTE fromNode='the clock' fromField='fraction_changed' toNode='TRUE' toField='set_scale'/>\n"
+      "<EXPORT localDEF='the clock' AS='clock'/>\n</Scene></X3D>\n";
+  for (VrmlEncoding encoding : {VrmlEncoding::vrml97, VrmlEncoding::x3d_classic, VrmlEncoding::x3d_xml}) {
+    VrmlWriteOptions options;
+    options.encoding = encoding;
+    const RewrittenSceneGraph graph = rewrite_scene_graph(x3d, "t.x3d", options);
+    EXPECT_EQ(graph.notes.back(), "2 DEF names renamed: they were not identifiers");
+    const NodeDocument d = parse_vrml_document(graph.text, "t");
+    if (encoding == VrmlEncoding::vrml97) {  // VRML97 has no EXPORT
+      EXPECT_EQ(graph.notes.front(), "1 IMPORT/EXPORT dropped: VRML97 has none");
+      EXPECT_TRUE(d.imports_exports.empty());
+      continue;
+    }
+    ASSERT_EQ(d.routes.size(), 1u);
+    EXPECT_EQ(d.routes[0].from_node, "the_clock");
+    EXPECT_EQ(d.routes[0].to_node, "TRUE_");
+    EXPECT_EQ(d.roots[0]->def_name, "the_clock");
+    ASSERT_EQ(d.imports_exports.size(), 1u);
+    EXPECT_EQ(d.imports_exports[0].name, "the_clock");
+    EXPECT_EQ(d.imports_exports[0].as, "clock");
+  }
+}
+
 }  // namespace
 }  // namespace cadnurbs
