@@ -7,18 +7,6 @@ namespace cadnurbs {
 
 namespace {
 
-// Every DEF'd node of the document (in PROTO instances' fields too), by name; the last DEF of a name wins,
-// as it does for the ROUTEs after it.
-void collect_defs(const NodePtr& node, std::map<std::string, Node*>& defs, std::set<const Node*>& seen) {
-  if (!node || !seen.insert(node.get()).second) return;
-  if (!node->def_name.empty()) defs[node->def_name] = node.get();
-  for (const auto& field : node->fields) {
-    if (const auto* sf = std::get_if<SFNode>(&field.value)) collect_defs(sf->node, defs, seen);
-    if (const auto* mf = std::get_if<MFNode>(&field.value))
-      for (const auto& child : mf->nodes) collect_defs(child, defs, seen);
-  }
-}
-
 // "set_point" and "point" name the same exposed field.
 std::string field_of_event(const std::string& event) {
   if (event.starts_with("set_")) return event.substr(4);
@@ -34,9 +22,12 @@ bool loops_from_load(const Node& time_sensor) {
 }  // namespace
 
 std::vector<std::string> apply_animation_at_rest(NodeDocument& document) {
+  // Every DEF'd node of the document's scope, by name (the last DEF of a name wins, as it does for the
+  // ROUTEs after it).
   std::map<std::string, Node*> defs;
-  std::set<const Node*> seen;
-  for (const auto& root : document.roots) collect_defs(root, defs, seen);
+  for_each_scope_node(document, [&](Node& node) {
+    if (!node.def_name.empty()) defs[node.def_name] = &node;
+  });
   auto named = [&](const std::string& name) -> Node* {
     const auto it = defs.find(name);
     return it == defs.end() ? nullptr : it->second;

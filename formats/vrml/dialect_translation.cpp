@@ -26,6 +26,22 @@ bool x3d_has_counterpart(const std::string& type) {
 
 bool is_amendment_node(const std::string& type) { return x3d_has_counterpart(type) || type == "CoordinateDeformer"; }
 
+// Nodes whose spellings differ by a field name (and the type): VRML97 type, X3D type, VRML97 field, X3D field.
+struct Spelling {
+  const char* vrml97_type;
+  const char* x3d_type;
+  const char* vrml97_field;
+  const char* x3d_field;
+};
+const Spelling kSpellings[] = {
+    {"NurbsCurve2D", "NurbsCurve2D", "point", "controlPoint"},
+    {"Polyline2D", "ContourPolyline2D", "point", "controlPoint"},
+    {"NurbsTextureSurface", "NurbsTextureCoordinate", "point", "controlPoint"},
+    {"Switch", "Switch", "choice", "children"},
+    {"LOD", "LOD", "level", "children"},
+    {"Collision", "Collision", "collide", "enabled"},
+};
+
 // Where a ROUTE's field went: (DEF, field) -> (DEF, field).
 using FieldMoves = std::map<std::pair<std::string, std::string>, std::pair<std::string, std::string>>;
 
@@ -188,19 +204,23 @@ class Translator {
     drop(node, "ccw", "X3D's NURBS surfaces have no ccw");
     node.type = "NurbsPatchSurface";
     into_coordinate(node, "controlPoint");
-    if (Field* t = field_of(node, "texCoord"))
-      if (auto* sf = std::get_if<SFNode>(&t->value); sf && sf->node && sf->node->type == "NurbsTextureSurface")
-        texture_surface_to_x3d(*sf->node);
   }
 
-  void texture_surface_to_x3d(Node& node) {
-    if (node.type != "NurbsTextureSurface") return;
-    node.type = "NurbsTextureCoordinate";
-    rename(node, "point", "controlPoint");
+  // A node of kSpellings in the target's spelling; false when it is none.
+  bool respell(Node& node) {
+    const bool to_x3d = target_ == VrmlDialect::x3d;
+    for (const auto& s : kSpellings)
+      if (node.type == (to_x3d ? s.vrml97_type : s.x3d_type)) {
+        node.type = to_x3d ? s.x3d_type : s.vrml97_type;
+        rename(node, to_x3d ? s.vrml97_field : s.x3d_field, to_x3d ? s.x3d_field : s.vrml97_field);
+        return true;
+      }
+    return false;
   }
 
   void to_x3d(Node& node) {
     const std::string type = node.type;
+    if (respell(node)) return;
     if (type == "NurbsSurface") {
       surface_to_x3d(node);
     } else if (type == "TrimmedSurface") {
@@ -216,15 +236,8 @@ class Translator {
       for (auto& f : node.fields)
         if (f.name == "trimmingContour") fields.push_back(f);
       node.fields = std::move(fields);
-    } else if (type == "NurbsCurve2D") {
-      rename(node, "point", "controlPoint");
-    } else if (type == "Polyline2D") {
-      node.type = "ContourPolyline2D";
-      rename(node, "point", "controlPoint");
     } else if (type == "NurbsCurve") {
       into_coordinate(node, "controlPoint");
-    } else if (type == "NurbsTextureSurface") {
-      texture_surface_to_x3d(node);
     } else if (type == "NurbsPositionInterpolator") {
       rename(node, "keyValue", "controlPoint");
       into_coordinate(node, "controlPoint");
@@ -239,12 +252,6 @@ class Translator {
       drop(node, "tessellationScale", "X3D's Group has none");
     } else if (type == "InlineLoadControl") {
       node.type = "Inline";
-    } else if (type == "Switch") {
-      rename(node, "choice", "children");
-    } else if (type == "LOD") {
-      rename(node, "level", "children");
-    } else if (type == "Collision") {
-      rename(node, "collide", "enabled");
     } else if (type == "CoordinateDeformer") {
       node.proto_instance = true;  // no X3D counterpart: declared by EXTERNPROTO
       needs_declaration_.insert(type);
@@ -272,6 +279,8 @@ class Translator {
   void to_vrml97(Node& node) {
     drop(node, "metadata", "VRML97 has no metadata");
     const std::string type = node.type;
+    if (type == "NurbsCurve2D") drop(node, "closed", "the VRML97 NURBS proposal has none");
+    if (respell(node)) return;
     if (type == "NurbsPatchSurface") {
       surface_to_vrml97(node);
     } else if (type == "NurbsTrimmedSurface") {
@@ -289,27 +298,12 @@ class Translator {
         for (const auto& f : surface->fields) moves_[{owner, f.name}] = {surface->def_name, f.name};
       trimmed.insert(trimmed.begin(), Field{"surface", SFNode{surface}, {}, node.line});
       node.fields = std::move(trimmed);
-    } else if (type == "NurbsCurve2D") {
-      rename(node, "controlPoint", "point");
-      drop(node, "closed", "the VRML97 NURBS proposal has none");
-    } else if (type == "ContourPolyline2D") {
-      node.type = "Polyline2D";
-      rename(node, "controlPoint", "point");
     } else if (type == "NurbsCurve") {
       out_of_coordinate(node, "controlPoint", "controlPoint");
       drop(node, "closed", "the VRML97 NURBS proposal has none");
-    } else if (type == "NurbsTextureCoordinate") {
-      node.type = "NurbsTextureSurface";
-      rename(node, "controlPoint", "point");
     } else if (type == "NurbsPositionInterpolator") {
       out_of_coordinate(node, "controlPoint", "keyValue");
       rename(node, "weight", "keyWeight");
-    } else if (type == "Switch") {
-      rename(node, "children", "choice");
-    } else if (type == "LOD") {
-      rename(node, "children", "level");
-    } else if (type == "Collision") {
-      rename(node, "enabled", "collide");
     } else if (type == "IndexedTriangleSet") {
       triangle_set_to_face_set(node);
     } else if (type == "HAnimHumanoid" || type == "HAnimJoint" || type == "HAnimSite" || type == "HAnimSegment") {
@@ -328,8 +322,6 @@ class Translator {
       node.proto_instance = true;  // an X3D node VRML97 lacks: declared by EXTERNPROTO
       needs_declaration_.insert(type);
       note(type + " declared by EXTERNPROTO urn:web3d:x3d:node:" + type + ": VRML97 has no such node");
-    } else if (type == "NurbsSurface" || type == "TrimmedSurface" || x3d_has_counterpart(type)) {
-      // already VRML97 (nothing to do)
     }
   }
 

@@ -44,6 +44,20 @@ void for_each_node(const NodeDocument& document, const std::function<void(const 
   walk_document(document);
 }
 
+void for_each_scope_node(NodeDocument& document, const std::function<void(Node&)>& visit) {
+  std::set<const Node*> seen;
+  std::function<void(const NodePtr&)> walk = [&](const NodePtr& node) {
+    if (!node || !seen.insert(node.get()).second) return;
+    visit(*node);
+    for (const auto& field : node->fields) {
+      if (const auto* sf = std::get_if<SFNode>(&field.value)) walk(sf->node);
+      if (const auto* mf = std::get_if<MFNode>(&field.value))
+        for (const auto& child : mf->nodes) walk(child);
+    }
+  };
+  for (const auto& root : document.roots) walk(root);
+}
+
 std::string access_keyword(const std::string& access, VrmlDialect dialect) {
   static const char* const names[4][2] = {{"field", "initializeOnly"},
                                           {"exposedField", "inputOutput"},

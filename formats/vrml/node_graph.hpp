@@ -127,6 +127,10 @@ struct NodeDocument {
 // defaults (each node once, however often USE'd).
 void for_each_node(const NodeDocument& document, const std::function<void(const Node&)>& visit);
 
+// Calls `visit` once for every node of the document's own DEF name scope: its roots' graphs, not its
+// PROTOs (each of which is a scope of its own).
+void for_each_scope_node(NodeDocument& document, const std::function<void(Node&)>& visit);
+
 // The declaration keyword of an access ("exposedField", "inputOutput"...) in `dialect`'s spelling.
 std::string access_keyword(const std::string& access, VrmlDialect dialect);
 

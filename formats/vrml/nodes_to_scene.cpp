@@ -43,11 +43,11 @@ std::string why_left_out(const Node& node) {
   if (node.proto_instance) return "PROTO instances are not expanded";
   auto ends = [&](const char* suffix) { return t.ends_with(suffix); };
   if (ends("Interpolator") || ends("Sensor") || ends("Trigger") || ends("Sequencer") || ends("Chaser") ||
-      ends("Damper") || t == "Script" || t == "BooleanFilter" || t == "BooleanToggle" || t == "TimeSensor")
+      ends("Damper") || t == "Script" || t == "BooleanFilter" || t == "BooleanToggle")
     return kAnimation;
   if (t == "Inline" || t == "InlineLoadControl") return "the url is another file, not followed";
   if (ends("Light") || t == "Background" || t == "TextureBackground" || t == "Fog" || t == "LocalFog" ||
-      t == "Sound" || t == "SpatialSound" || t == "AudioClip" || t == "Sound")
+      t == "Sound" || t == "SpatialSound" || t == "AudioClip")
     return "lights, sound and environment have no place in the output";
   return "no place in a Scene";
 }

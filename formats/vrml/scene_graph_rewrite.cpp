@@ -31,21 +31,6 @@ void count(const NodeDocument& document, RewrittenSceneGraph& out) {
   statements(document);
 }
 
-// The nodes of one DEF name scope: the roots' graphs (not the PROTOs, each its own scope).
-void for_each_scope_node(const NodeDocument& d, const std::function<void(Node&)>& visit) {
-  std::set<const Node*> seen;
-  std::function<void(const NodePtr&)> walk = [&](const NodePtr& node) {
-    if (!node || !seen.insert(node.get()).second) return;
-    visit(*node);
-    for (const auto& field : node->fields) {
-      if (const auto* sf = std::get_if<SFNode>(&field.value)) walk(sf->node);
-      if (const auto* mf = std::get_if<MFNode>(&field.value))
-        for (const auto& child : mf->nodes) walk(child);
-    }
-  };
-  for (const auto& root : d.roots) walk(root);
-}
-
 // Renames the DEF names that are not identifiers in every encoding (XML allows any string; a file may
 // hold spaces or control characters in one) with IdentifierRegistry, in the ROUTEs and IMPORT/EXPORT
 // statements too, scope by scope. Returns how many were renamed.
