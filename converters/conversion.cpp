@@ -5,6 +5,7 @@
 #include "analysis/tessellation/tessellate_uniform.hpp"
 #include "converters/arguments.hpp"
 #include "core/bounding_box.hpp"
+#include "core/geometry_error.hpp"
 #include "core/number_format.hpp"
 #include "core/world_scale.hpp"
 #include "formats/common/file_io.hpp"
@@ -120,7 +121,9 @@ SceneWriteOptions scene_write_options(const ConversionRequest& request, const Sc
   return options;
 }
 
-ConversionResult convert_loaded(const ConversionRequest& request, const LoadedInput& input, const ConversionLog& log) {
+namespace {
+
+ConversionResult convert_scene(const ConversionRequest& request, const LoadedInput& input, const ConversionLog& log) {
   const FileFormat& format = output_format(request.output);
   const Scene& scene = input.scene;
   if (!holds_geometry(count_entities(scene))) refuse_empty(request.input, input.loaded, "no geometry to write");
@@ -198,6 +201,18 @@ ConversionResult convert_loaded(const ConversionRequest& request, const LoadedIn
   result.counts = count_entities(written);
   tell(log.written, written, result);
   return result;
+}
+
+}  // namespace
+
+// Geometry the reader accepted can still fail later (a face the tessellator cannot mesh): the error then
+// names the face but not the file, which the user needs when a batch converts hundreds.
+ConversionResult convert_loaded(const ConversionRequest& request, const LoadedInput& input, const ConversionLog& log) {
+  try {
+    return convert_scene(request, input, log);
+  } catch (const GeometryError& error) {
+    throw FileError(request.input + ": " + error.what());
+  }
 }
 
 ConversionResult convert_file(const ConversionRequest& request, const ConversionLog& log) {

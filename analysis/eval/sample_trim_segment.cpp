@@ -31,6 +31,7 @@ constexpr int kChordSamples = 8;
 // largest sampled distance of criterion (1) (up to the first sample over 0.9 D). The pcurve's kinks
 // (sorted) inside the chord are sampled too: the even samples can miss a corner.
 constexpr double kMaxBulge = 0.3;
+constexpr double kNoBulge = 1e-9;
 
 bool chord_ok(const SurfaceEvaluator& surface, const SurfaceDeviationBound& bound, const TrimSegment& segment,
               const std::vector<double>& kinks, const TrimSample& a, const TrimSample& b, double d,
@@ -47,8 +48,10 @@ bool chord_ok(const SurfaceEvaluator& surface, const SurfaceDeviationBound& boun
   if (largest > 0.9 * d) return false;
   // Nor does a chord stand for an arc turning by more than about 100 degrees (sagitta above 0.3 of the
   // chord), however coarse D: the two half-cylinders of a lead thinner than D would mesh to one flat quad,
-  // its edges used four times (KiCad's R_Axial_Power leads at D = 0.01 x the diagonal).
-  if (largest > kMaxBulge * (b.point - a.point).norm()) return false;
+  // its edges used four times (KiCad's R_Axial_Power leads at D = 0.01 x the diagonal). A sagitta below
+  // kNoBulge D is rounding, not an arc: where the image stands still (a stretch of a boundary whose control
+  // points coincide, robot_jme2.x3dv) every chord is a few ulps long and would be split without end.
+  if (largest > kNoBulge * d && largest > kMaxBulge * (b.point - a.point).norm()) return false;
   return surface_chord_within(surface, bound, a.uv, a.point, b.uv, b.point, d);
 }
 

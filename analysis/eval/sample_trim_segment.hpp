@@ -9,7 +9,8 @@
 //      bound Q of surface_deviation_bound (this is exactly the mesh edge's own deviation), and
 //  (3) that sampled distance stays below 0.3 of the chord's length: however coarse D, no chord stands
 //      for an arc turning by more than about 100 degrees (a half-circle is two chords, so the two halves
-//      of a cylinder thinner than D never mesh to the same flat quad).
+//      of a cylinder thinner than D never mesh to the same flat quad); a sagitta under 1e-9 D is
+//      rounding and passes (where the image stands still, chords are ulps long).
 // (1) has no rigorous remainder (it would need bounds on the pcurve's derivatives): with m = 8 the
 // unsampled part of a chord's sagitta is about 1/64 of it when the curvature varies less than a few
 // times over one chord; the 0.9 factor covers that (0.9 (1 + 1/64) < 0.92). A chord may span C0

@@ -68,5 +68,30 @@ TEST(SampleTrimSegment, APolylineAcrossASurfaceCreaseIsSampledAtTheCrease) {
   EXPECT_NEAR((samples[1].point - Eigen::Vector3d(1, 0.5, 1)).norm(), 0.0, 1e-12);
 }
 
+// A side whose image stands still over a stretch (four control points of the side's column coincide:
+// robot_jme2.x3dv's body): there every chord is a few ulps long and its "sagitta" is rounding, which the
+// bulge criterion (sagitta above 0.3 of the chord) refused down to 1e-12 of the range, 10^11 samples
+// and std::bad_alloc. The still stretch is now a chord like any other.
+TEST(SampleTrimSegment, ASideStandingStillOverAStretchIsFewChords) {
+  NurbsSurface body;
+  body.u_order = 3, body.v_order = 4;
+  body.u_count = 3, body.v_count = 7;
+  body.u_knots = {0, 0, 0, 1, 1, 1};
+  body.v_knots = {0, 0, 0, 0, 1, 2, 3, 4, 4, 4, 4};
+  const Eigen::Vector3d still(0.00000005, -1.02834951, -1.96035683);
+  for (int j = 0; j < 7; ++j) {
+    const double z = 0.37 * j - 1.3;
+    body.points.emplace_back(-0.99999994, 0.1 * j, z);
+    body.points.emplace_back(-0.72949296, -0.72715288 + 0.01 * j, z + 0.2);
+    body.points.push_back(j >= 2 && j <= 5 ? still : Eigen::Vector3d(0.87539160, 0.3 * j, z));
+    for (double w : {1.0, 0.70710676, 1.0}) body.weights.push_back(w);
+  }
+  const auto samples = sample_on(body, Polyline2D{{{1.0, 0.0}, {1.0, 4.0}}}, 0.00737842);
+  EXPECT_LT(samples.size(), 200u);
+  size_t on_the_still_point = 0;
+  for (const auto& s : samples) on_the_still_point += (s.point - still).norm() < 1e-12;
+  EXPECT_LE(on_the_still_point, 3u);  // the stretch's ends, and at most one more
+}
+
 }  // namespace
 }  // namespace cadnurbs
