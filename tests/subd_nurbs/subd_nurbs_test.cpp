@@ -1,0 +1,351 @@
+// subd_to_nurbs against closed forms: Catmull-Clark limit-position masks, the
+// cubic B-spline of a crease, and limit points of our own uniform Catmull-Clark
+// refinement (written here, independent of OpenSubdiv).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <numbers>
+
+#include "analysis/subd_nurbs/subd_to_nurbs.hpp"
+#include "core/geometry_error.hpp"
+
+namespace cadnurbs {
+namespace {
+
+using Eigen::Vector3d;
+
+// A torus of `around` x `across` quads (every point valence 4), faces
+// counter-clockwise from outside.
+SubdControlNet torus_net(int around, int across) {
+  SubdControlNet net;
+  for (int j = 0; j < across; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double a = 2 * std::numbers::pi * i / around,
+                   b = 2 * std::numbers::pi * j / across;
+      net.points.emplace_back((3 + std::cos(b)) * std::cos(a),
+                              (3 + std::cos(b)) * std::sin(a),
+                              std::sin(b) + 0.1 * i);
+    }
+  auto id = [&](int i, int j) { return (i % around) + around * (j % across); };
+  for (int j = 0; j < across; ++j)
+    for (int i = 0; i < around; ++i)
+      net.faces.push_back(
+          {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return net;
+}
+
+SubdControlNet cube_net() {
+  SubdControlNet net;
+  for (int k = 0; k < 8; ++k)
+    net.points.emplace_back(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+  net.points[7] = {1.3, 1.2, 1.1}; // not symmetric, so that a wrong mask shows
+  net.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+               {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  return net;
+}
+
+// Catmull-Clark limit position of an interior point of an all-quad net: (n^2 v
+// + 4 sum e + sum f) / (n (n + 5)), e its edge neighbours, f the opposite
+// points of its quads.
+Vector3d limit_position(const SubdControlNet &net, int v) {
+  Vector3d edges = Vector3d::Zero(), opposite = Vector3d::Zero();
+  int n = 0;
+  for (const auto &face : net.faces)
+    for (int k = 0; k < 4; ++k)
+      if (face[k] == v) {
+        edges += net.points[face[(k + 1) % 4]];
+        opposite += net.points[face[(k + 2) % 4]];
+        ++n;
+      }
+  return (n * n * net.points[v] + 4 * edges + opposite) / (n * (n + 5.0));
+}
+
+Vector3d corner_point(const NurbsSurface &s, int corner) {
+  static constexpr double kUv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  return surface_point(s, kUv[corner][0], kUv[corner][1]);
+}
+
+// The control points of side k (v = 0, u = 1, v = 1, u = 0), counter-clockwise.
+std::vector<Vector3d> side_points(const NurbsSurface &s, int k) {
+  std::vector<Vector3d> row;
+  const int last = s.u_count - 1;
+  for (int t = 0; t <= last; ++t) {
+    const int index = k == 0   ? t
+                      : k == 1 ? last + s.u_count * t
+                      : k == 2 ? (last - t) + s.u_count * last
+                               : s.u_count * (last - t);
+    row.push_back(s.points[index]);
+  }
+  return row;
+}
+
+// Every edge number is used by exactly two sides, once reversed, and the two
+// sides' control rows are the same points in opposite order, bit for bit, when
+// both patches have the same number of points along it. Returns how many shared
+// sides were compared bit for bit.
+int expect_closed_and_shared(const SubdNurbs &result, int first) {
+  std::map<int, std::vector<std::pair<int, int>>> uses; // edge -> (patch, side)
+  for (size_t p = 0; p < result.patches.size(); ++p) {
+    const auto &loop = result.patches[p].loops.at(0);
+    EXPECT_EQ(loop.edges.size(), 4u);
+    for (int k = 0; k < 4; ++k)
+      uses[loop.edges[k].edge].push_back({static_cast<int>(p), k});
+  }
+  EXPECT_EQ(static_cast<int>(uses.size()), result.edges_used);
+  EXPECT_EQ(uses.begin()->first, first);
+  EXPECT_EQ(uses.rbegin()->first, first + result.edges_used - 1);
+  int bitwise = 0;
+  for (const auto &[edge, sides] : uses) {
+    EXPECT_EQ(sides.size(), 2u) << "edge " << edge;
+    if (sides.size() != 2)
+      continue;
+    const auto &[p, k] = sides[0];
+    const auto &[q, l] = sides[1];
+    EXPECT_NE(result.patches[p].loops[0].edges[k].reversed,
+              result.patches[q].loops[0].edges[l].reversed);
+    const auto &a = result.patches[p].surface;
+    const auto &b = result.patches[q].surface;
+    for (double t : {0.0, 0.1, 0.37, 0.5, 0.83, 1.0}) {
+      static constexpr double kStart[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+      static constexpr double kStep[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+      const Vector3d on_a = surface_point(a, kStart[k][0] + t * kStep[k][0],
+                                          kStart[k][1] + t * kStep[k][1]);
+      const Vector3d on_b =
+          surface_point(b, kStart[l][0] + (1 - t) * kStep[l][0],
+                        kStart[l][1] + (1 - t) * kStep[l][1]);
+      EXPECT_LT((on_a - on_b).norm(), 1e-13) << "edge " << edge << " t " << t;
+    }
+    if (a.u_count != b.u_count)
+      continue;
+    auto row_a = side_points(a, k), row_b = side_points(b, l);
+    std::reverse(row_b.begin(), row_b.end());
+    for (size_t i = 0; i < row_a.size(); ++i)
+      EXPECT_TRUE(row_a[i] == row_b[i]) << "edge " << edge << " point " << i;
+    ++bitwise;
+  }
+  return bitwise;
+}
+
+// One uniform Catmull-Clark step of a closed all-quad net without creases.
+// Child faces keep their parent's orientation: child k of face (a, b, c, d)
+// starts at the child of its k-th point, so after L steps face f's child (i, j)
+// covers [i, i+1] x [j, j+1] / 2^L of the parent's (u, v) domain.
+struct Refined {
+  SubdControlNet net;
+  std::vector<std::array<double, 3>>
+      origin;      // per face: base face, u, v of its first point
+  double size = 1; // side of each face in base (u, v)
+};
+
+Refined catmull_clark_step(const Refined &in) {
+  const auto &net = in.net;
+  Refined out;
+  out.size = in.size / 2;
+  const int points = static_cast<int>(net.points.size());
+  std::map<std::pair<int, int>, std::vector<int>> faces_of_edge;
+  std::vector<std::vector<int>> faces_of_point(points);
+  std::vector<Vector3d> face_point;
+  for (size_t f = 0; f < net.faces.size(); ++f) {
+    Vector3d c = Vector3d::Zero();
+    for (int k = 0; k < 4; ++k) {
+      const int a = net.faces[f][k], b = net.faces[f][(k + 1) % 4];
+      c += net.points[a] / 4;
+      faces_of_edge[{std::min(a, b), std::max(a, b)}].push_back(
+          static_cast<int>(f));
+      faces_of_point[a].push_back(static_cast<int>(f));
+    }
+    face_point.push_back(c);
+  }
+  // New points: vertex points, then edge points, then face points.
+  out.net.points.resize(points);
+  std::map<std::pair<int, int>, int> edge_index;
+  for (const auto &[edge, faces] : faces_of_edge) {
+    edge_index[edge] = static_cast<int>(out.net.points.size());
+    out.net.points.push_back((net.points[edge.first] + net.points[edge.second] +
+                              face_point[faces[0]] + face_point[faces[1]]) /
+                             4);
+  }
+  std::vector<Vector3d> edge_mid_sum(points, Vector3d::Zero());
+  for (const auto &[edge, faces] : faces_of_edge) {
+    const Vector3d mid = (net.points[edge.first] + net.points[edge.second]) / 2;
+    edge_mid_sum[edge.first] += mid;
+    edge_mid_sum[edge.second] += mid;
+  }
+  for (int v = 0; v < points; ++v) {
+    const double n = static_cast<double>(faces_of_point[v].size());
+    Vector3d f = Vector3d::Zero();
+    for (int face : faces_of_point[v])
+      f += face_point[face];
+    out.net.points[v] =
+        (f / n + 2 * edge_mid_sum[v] / n + (n - 3) * net.points[v]) / n;
+  }
+  const int first_face_point = static_cast<int>(out.net.points.size());
+  out.net.points.insert(out.net.points.end(), face_point.begin(),
+                        face_point.end());
+  static constexpr double kChildUv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (size_t f = 0; f < net.faces.size(); ++f) {
+    const auto &q = net.faces[f];
+    auto e = [&](int k) {
+      const int a = q[k % 4], b = q[(k + 1) % 4];
+      return edge_index[{std::min(a, b), std::max(a, b)}];
+    };
+    const int c = first_face_point + static_cast<int>(f);
+    for (int k = 0; k < 4; ++k) {
+      // Child k: (corner k, edge k, centre, edge k-1), rotated so that it
+      // starts where the parent's (u, v) is least: child 0 starts at corner 0,
+      // child 1 at edge 0, child 2 at the centre, child 3 at edge 3.
+      const std::array<int, 4> child = {q[k], e(k), c, e(k + 3)};
+      std::array<int, 4> rotated;
+      for (int r = 0; r < 4; ++r)
+        rotated[r] = child[(r - k + 4) % 4];
+      out.net.faces.push_back({rotated.begin(), rotated.end()});
+      out.origin.push_back({in.origin[f][0],
+                            in.origin[f][1] + kChildUv[k][0] * out.size,
+                            in.origin[f][2] + kChildUv[k][1] * out.size});
+    }
+  }
+  return out;
+}
+
+// The largest distance between the patches and the limit points of our own
+// refinement after `levels` steps (every refined face's first point, at its (u,
+// v) in its base face = patch).
+double distance_to_refined_limit(const SubdControlNet &net,
+                                 const SubdNurbs &result, int levels) {
+  Refined refined{net, {}, 1};
+  for (size_t f = 0; f < net.faces.size(); ++f)
+    refined.origin.push_back({static_cast<double>(f), 0, 0});
+  for (int l = 0; l < levels; ++l)
+    refined = catmull_clark_step(refined);
+  double worst = 0;
+  for (size_t f = 0; f < refined.net.faces.size(); ++f) {
+    const auto &[patch, u, v] = refined.origin[f];
+    const Vector3d exact = limit_position(refined.net, refined.net.faces[f][0]);
+    worst = std::max(
+        worst,
+        (surface_point(result.patches[static_cast<int>(patch)].surface, u, v) -
+         exact)
+            .norm());
+  }
+  return worst;
+}
+
+TEST(SubdToNurbs, RegularTorusIsExactBicubicPatches) {
+  const SubdControlNet net = torus_net(6, 5);
+  const SubdNurbs result = subd_to_nurbs(net, 1e-3, 100);
+  ASSERT_EQ(result.patches.size(), 30u);
+  EXPECT_EQ(result.exact_patches, 30);
+  EXPECT_EQ(result.fitted_patches, 0);
+  EXPECT_EQ(result.edges_used, 60);
+  for (size_t f = 0; f < net.faces.size(); ++f) {
+    const auto &s = result.patches[f].surface;
+    EXPECT_EQ(s.u_count, 4);
+    for (int c = 0; c < 4; ++c)
+      EXPECT_LT(
+          (corner_point(s, c) - limit_position(net, net.faces[f][c])).norm(),
+          1e-12)
+          << "face " << f;
+  }
+  EXPECT_EQ(expect_closed_and_shared(result, 100), 60);
+  // Inside the patches too: limit points of two refinement steps.
+  EXPECT_LT(distance_to_refined_limit(net, result, 2), 1e-12);
+}
+
+TEST(SubdToNurbs, CubeFitsWithinTheDeviation) {
+  const SubdControlNet net = cube_net();
+  const double deviation = 1e-3;
+  const SubdNurbs result = subd_to_nurbs(net, deviation, 0);
+  ASSERT_EQ(result.patches.size(), 6u);
+  EXPECT_EQ(result.exact_patches, 0);
+  EXPECT_EQ(result.fitted_patches, 6);
+  EXPECT_EQ(result.edges_used, 12);
+  EXPECT_LE(result.fitted_deviation, deviation);
+  for (size_t f = 0; f < net.faces.size(); ++f)
+    for (int c = 0; c < 4; ++c)
+      EXPECT_LT((corner_point(result.patches[f].surface, c) -
+                 limit_position(net, net.faces[f][c]))
+                    .norm(),
+                1e-12);
+  EXPECT_EQ(expect_closed_and_shared(result, 0), 12);
+  // Limit points of our own refinement, 5 steps deep (1024 per face), none of
+  // them a fit sample.
+  EXPECT_LE(distance_to_refined_limit(net, result, 5), deviation);
+  // Normals point outward: from the centre of the cube through the middle of
+  // each patch.
+  for (const auto &patch : result.patches)
+    EXPECT_GT(surface_normal(patch.surface, 0.5, 0.5)
+                  .dot(surface_point(patch.surface, 0.5, 0.5)),
+              0);
+}
+
+TEST(SubdToNurbs, CreaseIsTheCubicBsplineOfItsPoints) {
+  SubdControlNet net = torus_net(6, 5);
+  const int ring = 2; // the points (i, 2), i = 0..5, a closed crease
+  for (int i = 0; i < 6; ++i)
+    net.crease_edges.push_back({i + 6 * ring, (i + 1) % 6 + 6 * ring});
+  const SubdNurbs result = subd_to_nurbs(net, 1e-3, 0);
+  EXPECT_EQ(result.exact_patches, 30);
+  expect_closed_and_shared(result, 0);
+  int sides_on_crease = 0;
+  for (size_t f = 0; f < net.faces.size(); ++f)
+    for (int k = 0; k < 4; ++k) {
+      const int a = net.faces[f][k], b = net.faces[f][(k + 1) % 4];
+      if (a / 6 != ring || b / 6 != ring)
+        continue;
+      ++sides_on_crease;
+      // The curve from crease point a to b: B-spline segment of the crease
+      // points before a to after b.
+      const bool forward = b == (a + 1) % 6 + 6 * ring;
+      auto crease = [&](int step) {
+        return net
+            .points[((a % 6) + (forward ? step : -step) + 12) % 6 + 6 * ring];
+      };
+      const Vector3d p0 = crease(-1), p1 = crease(0), p2 = crease(1),
+                     p3 = crease(2);
+      for (double t : {0.0, 0.25, 0.5, 0.9, 1.0}) {
+        const double s = 1 - t;
+        const Vector3d expected =
+            (s * s * s * p0 + (3 * t * t * t - 6 * t * t + 4) * p1 +
+             (-3 * t * t * t + 3 * t * t + 3 * t + 1) * p2 + t * t * t * p3) /
+            6;
+        static constexpr double kStart[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        static constexpr double kStep[4][2] = {
+            {1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+        const Vector3d got = surface_point(result.patches[f].surface,
+                                           kStart[k][0] + t * kStep[k][0],
+                                           kStart[k][1] + t * kStep[k][1]);
+        EXPECT_LT((got - expected).norm(), 1e-12)
+            << "face " << f << " side " << k << " t " << t;
+      }
+    }
+  EXPECT_EQ(sides_on_crease, 12); // 6 crease edges, a face on each side
+}
+
+TEST(SubdToNurbs, RefusesANonManifoldEdge) {
+  SubdControlNet net;
+  net.points = {{0, 0, 0},  {1, 0, 0},  {1, 1, 0}, {0, 1, 0},
+                {1, -1, 0}, {0, -1, 0}, {1, 0, 1}, {0, 0, 1}};
+  net.faces = {{0, 1, 2, 3}, {1, 0, 5, 4}, {1, 0, 7, 6}};
+  try {
+    subd_to_nurbs(net, 1e-3, 0);
+    FAIL() << "accepted a non-manifold edge";
+  } catch (const GeometryError &e) {
+    EXPECT_STREQ(e.what(), "SubD: edge 0-1 has 3 or more faces (non-manifold)");
+  }
+  net.faces.pop_back();
+  net.faces.push_back({0, 1, 6, 7});
+  net.faces.erase(net.faces.begin() + 1);
+  try {
+    subd_to_nurbs(net, 1e-3, 0);
+    FAIL() << "accepted two faces running one edge the same way";
+  } catch (const GeometryError &e) {
+    EXPECT_STREQ(e.what(), "SubD: faces 0 and 1 both run edge 0-1 the same way "
+                           "(orientation not consistent)");
+  }
+}
+
+} // namespace
+} // namespace cadnurbs
