@@ -1,33 +1,35 @@
 #pragma once
-// Least-squares fits of clamped uniform cubic B-splines on [0, 1] with their
-// boundary control points held (internal to analysis/subd_nurbs): how
-// subd_to_nurbs fits the patches around extraordinary points while keeping
+// Least-squares fits of clamped cubic B-splines on [0, 1] with their boundary control points held (internal
+// to analysis/subd_nurbs): how subd_to_nurbs fits the patches around extraordinary points while keeping
 // every shared side identical to its neighbour's.
 #include <Eigen/Core>
 #include <vector>
 
 namespace cadnurbs::subd_nurbs {
 
-// 0,0,0,0, 1/spans, ..., 1,1,1,1: spans + 7 values for spans + 3 control
-// points.
-std::vector<double> uniform_cubic_knots(int spans);
+// Clamped cubic knots graded toward both ends: 0,0,0,0, 2^-levels, ..., 1/4, 1/2, 3/4, ..., 1 - 2^-levels,
+// 1,1,1,1 (2 levels spans, levels >= 1). Symmetric, so a side read backwards has the same knots. The
+// limit surface of a quad with an extraordinary corner is bicubic on the dyadic squares that avoid the
+// corner, so on every span but the corner ones this space holds it exactly (a uniform grid of 2^levels
+// spans would hold no more there, with far more points).
+std::vector<double> graded_cubic_knots(int levels);
 
-// The curve's spans + 3 control points nearest (least squares) to samples[a] at
-// params[a], its first and last held at `first` and `last`. params must include
-// enough points in every span (Schoenberg-Whitney).
-std::vector<Eigen::Vector3d>
-fit_cubic_curve(int spans, const std::vector<double> &params,
-                const std::vector<Eigen::Vector3d> &samples,
-                const Eigen::Vector3d &first, const Eigen::Vector3d &last);
+// Parameters for the fit's samples: `per_span` + 1 in every span of `knots` (ends included) and
+// `end_steps` more, geometric, inside each end span, where the fit has to work.
+std::vector<double> sample_params(const std::vector<double>& knots, int per_span, int end_steps);
 
-// The surface's (spans + 3)^2 control points, index i + (spans + 3) j (u
-// fastest), nearest (least squares) to samples[a + params.size() b] at
-// (params[a], params[b]); the points of `points` on the grid's four boundary
-// rows are held as given, the others replaced. The tensor grid of samples makes
-// the problem separable: two small solves instead of one with every interior
-// point.
-void fit_cubic_surface_interior(int spans, const std::vector<double> &params,
-                                const std::vector<Eigen::Vector3d> &samples,
-                                std::vector<Eigen::Vector3d> &points);
+// The curve's knots.size() - 4 control points nearest (least squares) to samples[a] at params[a], its
+// first and last held at `first` and `last`. params must put enough points in every span
+// (Schoenberg-Whitney).
+std::vector<Eigen::Vector3d> fit_cubic_curve(const std::vector<double>& knots, const std::vector<double>& params,
+                                             const std::vector<Eigen::Vector3d>& samples, const Eigen::Vector3d& first,
+                                             const Eigen::Vector3d& last);
 
-} // namespace cadnurbs::subd_nurbs
+// The surface's c^2 control points (c = knots.size() - 4, the same knots both ways), index i + c j (u
+// fastest), nearest (least squares) to samples[a + params.size() b] at (params[a], params[b]); the points
+// of `points` on the grid's four boundary rows are held as given, the others replaced. The tensor grid of
+// samples makes the problem separable: two small solves instead of one with every interior point.
+void fit_cubic_surface_interior(const std::vector<double>& knots, const std::vector<double>& params,
+                                const std::vector<Eigen::Vector3d>& samples, std::vector<Eigen::Vector3d>& points);
+
+}  // namespace cadnurbs::subd_nurbs

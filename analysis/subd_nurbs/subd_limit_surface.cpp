@@ -23,71 +23,59 @@ namespace {
 // The point type OpenSubdiv's refiners and stencils average.
 struct OsdPoint {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
-  void Clear(void * = nullptr) { p.setZero(); }
-  void AddWithWeight(const OsdPoint &source, double weight) {
-    p += weight * source.p;
-  }
+  void Clear(void* = nullptr) { p.setZero(); }
+  void AddWithWeight(const OsdPoint& source, double weight) { p += weight * source.p; }
 };
 
-constexpr int kIsolationLevel = 10; // OpenSubdiv's deepest
+constexpr int kIsolationLevel = 10;  // OpenSubdiv's deepest
 
 // Refuses edges of 3+ faces and edges two faces run the same way.
-void check_manifold(const SubdControlNet &net, const std::string &entity) {
-  auto for_each_side = [&](auto &&visit) {
+void check_manifold(const SubdControlNet& net, const std::string& entity) {
+  auto for_each_side = [&](auto&& visit) {
     for (size_t f = 0; f < net.faces.size(); ++f)
       for (size_t k = 0; k < net.faces[f].size(); ++k)
-        visit(static_cast<int>(f), net.faces[f][k],
-              net.faces[f][(k + 1) % net.faces[f].size()]);
+        visit(static_cast<int>(f), net.faces[f][k], net.faces[f][(k + 1) % net.faces[f].size()]);
   };
   std::map<std::pair<int, int>, int> uses;
   for_each_side([&](int, int a, int b) {
     if (++uses[{std::min(a, b), std::max(a, b)}] == 3)
-      throw GeometryError(entity, "edge " + std::to_string(std::min(a, b)) +
-                                      "-" + std::to_string(std::max(a, b)) +
+      throw GeometryError(entity, "edge " + std::to_string(std::min(a, b)) + "-" + std::to_string(std::max(a, b)) +
                                       " has 3 or more faces (non-manifold)");
   });
   std::map<std::pair<int, int>, int> face_of_side;
   for_each_side([&](int f, int a, int b) {
     const auto [side, fresh] = face_of_side.emplace(std::pair{a, b}, f);
     if (!fresh)
-      throw GeometryError(entity,
-                          "faces " + std::to_string(side->second) + " and " +
-                              std::to_string(f) + " both run edge " +
-                              std::to_string(a) + "-" + std::to_string(b) +
-                              " the same way (orientation not consistent)");
+      throw GeometryError(entity, "faces " + std::to_string(side->second) + " and " + std::to_string(f) +
+                                      " both run edge " + std::to_string(a) + "-" + std::to_string(b) +
+                                      " the same way (orientation not consistent)");
   });
 }
 
-} // namespace
+}  // namespace
 
 struct SubdLimitSurface::Impl {
   std::unique_ptr<Far::TopologyRefiner> refiner;
   std::unique_ptr<Far::PatchTable> table;
   std::unique_ptr<Far::PatchMap> map;
-  std::vector<OsdPoint>
-      points; // every refined vertex, then the patch table's local points
-  std::vector<std::optional<std::array<Eigen::Vector3d, 16>>>
-      regular;                                 // per patch
-  std::vector<std::array<PatchSide, 4>> sides; // per patch
+  std::vector<OsdPoint> points;  // every refined vertex, then the patch table's local points
+  std::vector<std::optional<std::array<Eigen::Vector3d, 16>>> regular;  // per patch
+  std::vector<std::array<PatchSide, 4>> sides;                          // per patch
 };
 
-SubdLimitSurface::SubdLimitSurface(const SubdControlNet &net,
-                                   const std::string &entity)
+SubdLimitSurface::SubdLimitSurface(const SubdControlNet& net, const std::string& entity)
     : impl_(std::make_unique<Impl>()) {
   validate(net, entity);
   check_manifold(net, entity);
 
   std::vector<int> sizes, indices, crease_pairs, corners(net.corner_points);
-  for (const auto &face : net.faces) {
+  for (const auto& face : net.faces) {
     sizes.push_back(static_cast<int>(face.size()));
     indices.insert(indices.end(), face.begin(), face.end());
   }
-  for (const auto &[a, b] : net.crease_edges)
-    crease_pairs.insert(crease_pairs.end(), {a, b});
-  const std::vector<float> crease_sharpness(net.crease_edges.size(),
-                                            Sdc::Crease::SHARPNESS_INFINITE);
-  const std::vector<float> corner_sharpness(corners.size(),
-                                            Sdc::Crease::SHARPNESS_INFINITE);
+  for (const auto& [a, b] : net.crease_edges) crease_pairs.insert(crease_pairs.end(), {a, b});
+  const std::vector<float> crease_sharpness(net.crease_edges.size(), Sdc::Crease::SHARPNESS_INFINITE);
+  const std::vector<float> corner_sharpness(corners.size(), Sdc::Crease::SHARPNESS_INFINITE);
   Far::TopologyDescriptor descriptor;
   descriptor.numVertices = static_cast<int>(net.points.size());
   descriptor.numFaces = static_cast<int>(net.faces.size());
@@ -101,20 +89,15 @@ SubdLimitSurface::SubdLimitSurface(const SubdControlNet &net,
   descriptor.cornerWeights = corner_sharpness.data();
 
   Sdc::Options rules;
-  rules.SetVtxBoundaryInterpolation(
-      Sdc::Options::VTX_BOUNDARY_EDGE_ONLY); // boundary = crease; corners as
-                                             // tagged
+  rules.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);  // boundary = crease; corners as
+                                                                            // tagged
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  impl_->refiner.reset(Factory::Create(
-      descriptor, Factory::Options(Sdc::SCHEME_CATMARK, rules)));
-  if (!impl_->refiner)
-    throw GeometryError(entity, "OpenSubdiv refuses the net's topology");
+  impl_->refiner.reset(Factory::Create(descriptor, Factory::Options(Sdc::SCHEME_CATMARK, rules)));
+  if (!impl_->refiner) throw GeometryError(entity, "OpenSubdiv refuses the net's topology");
 
   Far::PatchTableFactory::Options options(kIsolationLevel);
-  options.useInfSharpPatch =
-      true; // creases like boundaries: regular patches beside them
-  options.generateLegacySharpCornerPatches =
-      false; // a smooth boundary corner is isolated, not made sharp
+  options.useInfSharpPatch = true;                   // creases like boundaries: regular patches beside them
+  options.generateLegacySharpCornerPatches = false;  // a smooth boundary corner is isolated, not made sharp
   options.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
   options.SetPatchPrecision<double>();
   options.generateVaryingTables = false;
@@ -122,112 +105,85 @@ SubdLimitSurface::SubdLimitSurface(const SubdControlNet &net,
   impl_->table.reset(Far::PatchTableFactory::Create(*impl_->refiner, options));
   impl_->map = std::make_unique<Far::PatchMap>(*impl_->table);
 
-  auto &points = impl_->points;
+  auto& points = impl_->points;
   const int refined = impl_->refiner->GetNumVerticesTotal();
   points.resize(refined + impl_->table->GetNumLocalPoints());
-  for (size_t i = 0; i < net.points.size(); ++i)
-    points[i].p = net.points[i];
+  for (size_t i = 0; i < net.points.size(); ++i) points[i].p = net.points[i];
   Far::PrimvarRefinerReal<double> primvars(*impl_->refiner);
-  OsdPoint *source = points.data();
+  OsdPoint* source = points.data();
   for (int level = 1; level <= impl_->refiner->GetMaxLevel(); ++level) {
-    OsdPoint *destination =
-        source + impl_->refiner->GetLevel(level - 1).GetNumVertices();
+    OsdPoint* destination = source + impl_->refiner->GetLevel(level - 1).GetNumVertices();
     primvars.Interpolate(level, source, destination);
     source = destination;
   }
-  if (const auto *stencils = impl_->table->GetLocalPointStencilTable<double>())
+  if (const auto* stencils = impl_->table->GetLocalPointStencilTable<double>())
     stencils->UpdateValues(points.data(), points.data() + refined);
 
   const Far::PtexIndices ptex(*impl_->refiner);
   const int patches = ptex.GetNumFaces();
   impl_->sides.resize(patches);
   for (int f = 0; f < static_cast<int>(net.faces.size()); ++f) {
-    const int quadrants =
-        net.faces[f].size() == 4 ? 1 : static_cast<int>(net.faces[f].size());
+    const int quadrants = net.faces[f].size() == 4 ? 1 : static_cast<int>(net.faces[f].size());
     for (int q = 0; q < quadrants; ++q) {
       int faces[4], edges[4];
       ptex.GetAdjacency(*impl_->refiner, f, q, faces, edges);
-      for (int k = 0; k < 4; ++k)
-        impl_->sides[ptex.GetFaceId(f) + q][k] = {faces[k],
-                                                  faces[k] < 0 ? -1 : edges[k]};
+      for (int k = 0; k < 4; ++k) impl_->sides[ptex.GetFaceId(f) + q][k] = {faces[k], faces[k] < 0 ? -1 : edges[k]};
     }
   }
 
-  // A patch is regular on its own when the table holds one regular B-spline
-  // patch over all of it.
+  // A patch is regular on its own when the table holds one regular B-spline patch over all of it.
   std::vector<int> pieces(patches, 0);
   impl_->regular.resize(patches);
-  const Far::PatchTable &table = *impl_->table;
+  const Far::PatchTable& table = *impl_->table;
   for (int array = 0; array < table.GetNumPatchArrays(); ++array) {
-    const bool bspline = table.GetPatchArrayDescriptor(array).GetType() ==
-                         Far::PatchDescriptor::REGULAR;
+    const bool bspline = table.GetPatchArrayDescriptor(array).GetType() == Far::PatchDescriptor::REGULAR;
     for (int i = 0; i < table.GetNumPatches(array); ++i) {
       const Far::PatchParam param = table.GetPatchParam(array, i);
       const int patch = param.GetFaceId();
       ++pieces[patch];
-      if (!bspline || !param.IsRegular() ||
-          param.GetDepth() != param.NonQuadRoot())
-        continue;
+      if (!bspline || !param.IsRegular() || param.GetDepth() != param.NonQuadRoot()) continue;
       const auto cvs = table.GetPatchVertices(array, i);
       std::array<Eigen::Vector3d, 16> grid;
       for (int k = 0; k < 16; ++k)
-        grid[k] = cvs[k] >= 0 ? points[cvs[k]].p
-                              : Eigen::Vector3d::Zero(); // phantoms: below
-      // Boundary bits, side k = 0..3 (v = 0, u = 1, v = 1, u = 0): the row
-      // beyond is the phantom 2 P1 - P2.
+        grid[k] = cvs[k] >= 0 ? points[cvs[k]].p : Eigen::Vector3d::Zero();  // phantoms: below
+      // Boundary bits, side k = 0..3 (v = 0, u = 1, v = 1, u = 0): the row beyond is the phantom 2 P1 - P2.
       const int boundary = param.GetBoundary();
-      auto at = [&](int u, int v) -> Eigen::Vector3d & {
-        return grid[u + 4 * v];
-      };
+      auto at = [&](int u, int v) -> Eigen::Vector3d& { return grid[u + 4 * v]; };
       for (int t = 0; t < 4; ++t) {
-        if (boundary & 1)
-          at(t, 0) = 2 * at(t, 1) - at(t, 2);
-        if (boundary & 4)
-          at(t, 3) = 2 * at(t, 2) - at(t, 1);
+        if (boundary & 1) at(t, 0) = 2 * at(t, 1) - at(t, 2);
+        if (boundary & 4) at(t, 3) = 2 * at(t, 2) - at(t, 1);
       }
       for (int t = 0; t < 4; ++t) {
-        if (boundary & 8)
-          at(0, t) = 2 * at(1, t) - at(2, t);
-        if (boundary & 2)
-          at(3, t) = 2 * at(2, t) - at(1, t);
+        if (boundary & 8) at(0, t) = 2 * at(1, t) - at(2, t);
+        if (boundary & 2) at(3, t) = 2 * at(2, t) - at(1, t);
       }
       impl_->regular[patch] = grid;
     }
   }
   for (int patch = 0; patch < patches; ++patch)
-    if (pieces[patch] != 1)
-      impl_->regular[patch].reset();
+    if (pieces[patch] != 1) impl_->regular[patch].reset();
 }
 
 SubdLimitSurface::~SubdLimitSurface() = default;
 
-int SubdLimitSurface::patch_count() const {
-  return static_cast<int>(impl_->sides.size());
-}
+int SubdLimitSurface::patch_count() const { return static_cast<int>(impl_->sides.size()); }
 
 Eigen::Vector3d SubdLimitSurface::point(int patch, double u, double v) const {
-  const Far::PatchTable::PatchHandle *handle =
-      impl_->map->FindPatch(patch, u, v);
+  const Far::PatchTable::PatchHandle* handle = impl_->map->FindPatch(patch, u, v);
   if (!handle)
-    throw GeometryError("subd limit surface", "no patch at (" +
-                                                  std::to_string(u) + ", " +
-                                                  std::to_string(v) + ")");
+    throw GeometryError("subd limit surface", "no patch at (" + std::to_string(u) + ", " + std::to_string(v) + ")");
   double weights[20];
   impl_->table->EvaluateBasis(*handle, u, v, weights);
   const auto cvs = impl_->table->GetPatchVertices(*handle);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (int k = 0; k < cvs.size(); ++k)
-    sum += weights[k] * impl_->points[cvs[k]].p;
+  for (int k = 0; k < cvs.size(); ++k) sum += weights[k] * impl_->points[cvs[k]].p;
   return sum;
 }
 
-std::optional<std::array<Eigen::Vector3d, 16>>
-SubdLimitSurface::regular_bspline_points(int patch) const {
+std::optional<std::array<Eigen::Vector3d, 16>> SubdLimitSurface::regular_bspline_points(int patch) const {
   return impl_->regular[patch];
 }
 
-PatchSide SubdLimitSurface::neighbour(int patch, int side) const {
-  return impl_->sides[patch][side];
-}
+PatchSide SubdLimitSurface::neighbour(int patch, int side) const { return impl_->sides[patch][side]; }
 
-} // namespace cadnurbs::subd_nurbs
+}  // namespace cadnurbs::subd_nurbs

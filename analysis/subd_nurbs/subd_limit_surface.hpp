@@ -1,25 +1,20 @@
 #pragma once
-// The Catmull-Clark limit surface of a SubdControlNet, patch by patch, through
-// OpenSubdiv 3.5 (Far): what subd_to_nurbs fits and copies (internal to
-// analysis/subd_nurbs).
+// The Catmull-Clark limit surface of a SubdControlNet, patch by patch, through OpenSubdiv 3.5 (Far): what subd_to_nurbs
+// fits and copies (internal to analysis/subd_nurbs).
 //
-// Patches: one per quad of the net and one per corner of every other face (the
-// quads one Catmull-Clark step makes of it), OpenSubdiv's ptex faces, each over
-// (u, v) in [0, 1]^2. A quad's (0, 0) is its first point, u runs toward its
-// second and v toward its last, so Su x Sv points where the face does
-// (outward). Sides k = 0..3 run counter-clockwise: v = 0, u = 1, v = 1, u = 0.
+// Patches: one per quad of the net and one per corner of every other face (the quads one Catmull-Clark step makes of
+// it), OpenSubdiv's ptex faces, each over (u, v) in [0, 1]^2. A quad's (0, 0) is its first point, u runs toward its
+// second and v toward its last, so Su x Sv points where the face does (outward). Sides k = 0..3 run counter-clockwise:
+// v = 0, u = 1, v = 1, u = 0.
 //
-// Rules: crease edges and boundary edges are infinitely sharp (the limit there
-// is the cubic B-spline of the crease points), corner points stay where they
-// are; everything else is smooth. Faces and their patches away from
-// extraordinary features are OpenSubdiv's regular B-spline patches, exact;
-// features are isolated adaptively to level 10, where the patch touching them
-// is a Gregory patch (OpenSubdiv's end cap, exact at its corners: the
-// limit-position masks); elsewhere every point is exact.
+// Rules: crease edges and boundary edges are infinitely sharp (the limit there is the cubic B-spline of the crease
+// points), corner points stay where they are; everything else is smooth. Faces and their patches away from
+// extraordinary features are OpenSubdiv's regular B-spline patches, exact; features are isolated adaptively to level
+// 10, where the patch touching them is a Gregory patch (OpenSubdiv's end cap, exact at its corners: the limit-position
+// masks); elsewhere every point is exact.
 //
-// Refuses (GeometryError(entity, reason)) what validate(SubdControlNet)
-// refuses, an edge of three or more faces (non-manifold) and an edge two faces
-// run the same way (orientation not consistent).
+// Refuses (GeometryError(entity, reason)) what validate(SubdControlNet) refuses, an edge of three or more faces
+// (non-manifold) and an edge two faces run the same way (orientation not consistent).
 #include <Eigen/Core>
 #include <array>
 #include <memory>
@@ -30,34 +25,31 @@
 
 namespace cadnurbs::subd_nurbs {
 
-// The neighbour across one side of a patch: its patch and which of its sides;
-// patch -1 on the boundary.
+// The neighbour across one side of a patch: its patch and which of its sides; patch -1 on the boundary.
 struct PatchSide {
   int patch = -1;
   int side = -1;
 };
 
 class SubdLimitSurface {
-public:
-  SubdLimitSurface(const SubdControlNet &net, const std::string &entity);
+ public:
+  SubdLimitSurface(const SubdControlNet& net, const std::string& entity);
   ~SubdLimitSurface();
-  SubdLimitSurface(const SubdLimitSurface &) = delete;
-  SubdLimitSurface &operator=(const SubdLimitSurface &) = delete;
+  SubdLimitSurface(const SubdLimitSurface&) = delete;
+  SubdLimitSurface& operator=(const SubdLimitSurface&) = delete;
 
   int patch_count() const;
   // The limit point of patch `patch` at (u, v) in [0, 1]^2.
   Eigen::Vector3d point(int patch, double u, double v) const;
-  // Where the patch is one regular B-spline patch of its own: its 4 x 4 uniform
-  // cubic B-spline points, index i + 4 j (u fastest), the points beyond a
-  // boundary or crease already the reflected phantoms 2 P1 - P2. nullopt where
-  // the patch holds an extraordinary feature.
-  std::optional<std::array<Eigen::Vector3d, 16>>
-  regular_bspline_points(int patch) const;
+  // Where the patch is one regular B-spline patch of its own: its 4 x 4 uniform cubic B-spline points, index i + 4 j (u
+  // fastest), the points beyond a boundary or crease already the reflected phantoms 2 P1 - P2. nullopt where the patch
+  // holds an extraordinary feature.
+  std::optional<std::array<Eigen::Vector3d, 16>> regular_bspline_points(int patch) const;
   PatchSide neighbour(int patch, int side) const;
 
-private:
+ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 
-} // namespace cadnurbs::subd_nurbs
+}  // namespace cadnurbs::subd_nurbs

@@ -19,13 +19,11 @@ namespace {
 using subd_nurbs::SubdLimitSurface;
 using Row = std::vector<Eigen::Vector3d>;
 
-constexpr int kMaxSpanLevel = 6; // 64 spans each way
+constexpr int kMaxLevel = 10;  // the smallest span 2^-10, OpenSubdiv's deepest isolation
 
 // Uniform cubic B-spline segment -> Bezier points: b = M p.
-constexpr double kBsplineToBezier[4][4] = {{1.0 / 6, 4.0 / 6, 1.0 / 6, 0},
-                                           {0, 4.0 / 6, 2.0 / 6, 0},
-                                           {0, 2.0 / 6, 4.0 / 6, 0},
-                                           {0, 1.0 / 6, 4.0 / 6, 1.0 / 6}};
+constexpr double kBsplineToBezier[4][4] = {
+    {1.0 / 6, 4.0 / 6, 1.0 / 6, 0}, {0, 4.0 / 6, 2.0 / 6, 0}, {0, 2.0 / 6, 4.0 / 6, 0}, {0, 1.0 / 6, 4.0 / 6, 1.0 / 6}};
 
 // Corner c of a patch is where side c starts: (0,0), (1,0), (1,1), (0,1).
 constexpr double kCornerUv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -34,27 +32,25 @@ constexpr double kCornerUv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 Eigen::Vector2d side_uv(int side, double t) {
   static constexpr double kStart[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   static constexpr double kStep[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-  return {kStart[side][0] + t * kStep[side][0],
-          kStart[side][1] + t * kStep[side][1]};
+  return {kStart[side][0] + t * kStep[side][0], kStart[side][1] + t * kStep[side][1]};
 }
 
-// Index of the k-th control point of side `side` (counter-clockwise) in a count
-// x count grid.
+// Index of the k-th control point of side `side` (counter-clockwise) in a count x count grid.
 int side_index(int side, int k, int count) {
   const int last = count - 1;
   switch (side) {
-  case 0:
-    return k;
-  case 1:
-    return last + count * k;
-  case 2:
-    return (last - k) + count * last;
-  default:
-    return count * (last - k);
+    case 0:
+      return k;
+    case 1:
+      return last + count * k;
+    case 2:
+      return (last - k) + count * last;
+    default:
+      return count * (last - k);
   }
 }
 
-NurbsSurface bezier_of(const std::array<Eigen::Vector3d, 16> &bspline) {
+NurbsSurface bezier_of(const std::array<Eigen::Vector3d, 16>& bspline) {
   NurbsSurface s;
   s.u_order = s.v_order = 4;
   s.u_count = s.v_count = 4;
@@ -64,90 +60,63 @@ NurbsSurface bezier_of(const std::array<Eigen::Vector3d, 16> &bspline) {
     for (int i = 0; i < 4; ++i)
       for (int b = 0; b < 4; ++b)
         for (int a = 0; a < 4; ++a)
-          s.points[i + 4 * j] += kBsplineToBezier[i][a] *
-                                 kBsplineToBezier[j][b] * bspline[a + 4 * b];
+          s.points[i + 4 * j] += kBsplineToBezier[i][a] * kBsplineToBezier[j][b] * bspline[a + 4 * b];
   return s;
 }
 
-NurbsSurface uniform_surface(int spans) {
+NurbsSurface fitted_surface(const std::vector<double>& knots) {
   NurbsSurface s;
   s.u_order = s.v_order = 4;
-  s.u_count = s.v_count = spans + 3;
-  s.u_knots = s.v_knots = subd_nurbs::uniform_cubic_knots(spans);
-  s.points.assign(static_cast<size_t>(s.u_count) * s.v_count,
-                  Eigen::Vector3d::Zero());
+  s.u_count = s.v_count = static_cast<int>(knots.size()) - 4;
+  s.u_knots = s.v_knots = knots;
+  s.points.assign(static_cast<size_t>(s.u_count) * s.v_count, Eigen::Vector3d::Zero());
   return s;
 }
 
-Row side_row(const NurbsSurface &s, int side) {
+Row side_row(const NurbsSurface& s, int side) {
   Row row(s.u_count);
-  for (int k = 0; k < s.u_count; ++k)
-    row[k] = s.points[side_index(side, k, s.u_count)];
+  for (int k = 0; k < s.u_count; ++k) row[k] = s.points[side_index(side, k, s.u_count)];
   return row;
 }
 
-void set_side_row(NurbsSurface &s, int side, const Row &row) {
-  for (int k = 0; k < s.u_count; ++k)
-    s.points[side_index(side, k, s.u_count)] = row[k];
+void set_side_row(NurbsSurface& s, int side, const Row& row) {
+  for (int k = 0; k < s.u_count; ++k) s.points[side_index(side, k, s.u_count)] = row[k];
 }
 
-// A Bezier side (4 points) as the same cubic on `spans` uniform spans.
-Row refined_side(const Row &bezier, int spans) {
+// A Bezier side (4 points) as the same cubic on `knots`.
+Row refined_side(const Row& bezier, const std::vector<double>& knots) {
   NurbsCurve curve;
   curve.order = 4;
   curve.knots = {0, 0, 0, 0, 1, 1, 1, 1};
   curve.points = bezier;
-  const std::vector<double> knots = subd_nurbs::uniform_cubic_knots(spans);
-  const NurbsCurve refined = refine_knots(
-      curve, std::vector<double>(knots.begin() + 4, knots.end() - 4));
+  const NurbsCurve refined = refine_knots(curve, std::vector<double>(knots.begin() + 4, knots.end() - 4));
   Row row = refined.points;
-  row.front() =
-      bezier.front(); // the corners stay the shared values, bit for bit
+  row.front() = bezier.front();  // the corners stay the shared values, bit for bit
   row.back() = bezier.back();
   return row;
 }
 
-// Parameters of the fit's samples: 4 per span, and geometric toward each end
-// where the limit surface around an extraordinary point changes fastest.
-std::vector<double> fit_params(int spans) {
-  std::vector<double> t;
-  for (int k = 0; k <= 4 * spans; ++k)
-    t.push_back(static_cast<double>(k) / (4 * spans));
-  for (int j = 3; j <= 12; ++j) {
-    const double step = std::ldexp(1.0 / spans, -j);
-    t.insert(t.end(), {step, 1 - step});
-  }
-  std::sort(t.begin(), t.end());
-  t.erase(std::unique(t.begin(), t.end()), t.end());
-  return t;
-}
-
 // The check's parameters: halfway between the fit's.
-std::vector<double> check_params(const std::vector<double> &fit) {
+std::vector<double> check_params(const std::vector<double>& fit) {
   std::vector<double> t;
-  for (size_t k = 0; k + 1 < fit.size(); ++k)
-    t.push_back(0.5 * (fit[k] + fit[k + 1]));
+  for (size_t k = 0; k + 1 < fit.size(); ++k) t.push_back(0.5 * (fit[k] + fit[k + 1]));
   return t;
 }
 
 struct Sides {
-  std::vector<std::array<int, 4>>
-      number; // per patch and side: edge number from 0
-  std::vector<std::array<bool, 4>>
-      reversed; // the side runs against its edge (the owner's direction)
-  std::vector<std::array<int, 2>>
-      owner; // per edge: (patch, side) whose direction it takes
+  std::vector<std::array<int, 4>> number;     // per patch and side: edge number from 0
+  std::vector<std::array<bool, 4>> reversed;  // the side runs against its edge (the owner's direction)
+  std::vector<std::array<int, 2>> owner;      // per edge: (patch, side) whose direction it takes
 };
 
-Sides number_sides(const SubdLimitSurface &limit) {
+Sides number_sides(const SubdLimitSurface& limit) {
   Sides sides;
   const int patches = limit.patch_count();
   sides.number.assign(patches, {-1, -1, -1, -1});
   sides.reversed.assign(patches, {false, false, false, false});
   for (int p = 0; p < patches; ++p)
     for (int k = 0; k < 4; ++k) {
-      if (sides.number[p][k] >= 0)
-        continue;
+      if (sides.number[p][k] >= 0) continue;
       const int edge = static_cast<int>(sides.owner.size());
       sides.owner.push_back({p, k});
       sides.number[p][k] = edge;
@@ -160,18 +129,15 @@ Sides number_sides(const SubdLimitSurface &limit) {
   return sides;
 }
 
-// One position per point of the net where patches meet (corners joined across
-// shared sides), taken from the first patch corner there.
-std::vector<std::array<Eigen::Vector3d, 4>>
-corner_positions(const SubdLimitSurface &limit) {
+// One position per point of the net where patches meet (corners joined across shared sides), taken from the first patch
+// corner there.
+std::vector<std::array<Eigen::Vector3d, 4>> corner_positions(const SubdLimitSurface& limit) {
   const int patches = limit.patch_count();
   UnionFind corners(4 * patches);
   for (int p = 0; p < patches; ++p)
     for (int c = 0; c < 4; ++c) {
-      const auto other = limit.neighbour(
-          p, c); // side c starts at corner c; the neighbour's side ends there
-      if (other.patch >= 0)
-        corners.unite(4 * p + c, 4 * other.patch + (other.side + 1) % 4);
+      const auto other = limit.neighbour(p, c);  // side c starts at corner c; the neighbour's side ends there
+      if (other.patch >= 0) corners.unite(4 * p + c, 4 * other.patch + (other.side + 1) % 4);
     }
   std::vector<Eigen::Vector3d> of_class(4 * patches);
   std::vector<bool> known(4 * patches, false);
@@ -188,12 +154,10 @@ corner_positions(const SubdLimitSurface &limit) {
   return positions;
 }
 
-} // namespace
+}  // namespace
 
-SubdNurbs subd_to_nurbs(const SubdControlNet &net, double deviation,
-                        int first_edge_number, const std::string &entity) {
-  if (!(deviation > 0))
-    throw GeometryError(entity, "deviation must be > 0");
+SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_edge_number, const std::string& entity) {
+  if (!(deviation > 0)) throw GeometryError(entity, "deviation must be > 0");
   const SubdLimitSurface limit(net, entity);
   const int patches = limit.patch_count();
   const Sides sides = number_sides(limit);
@@ -205,15 +169,13 @@ SubdNurbs subd_to_nurbs(const SubdControlNet &net, double deviation,
   for (int p = 0; p < patches; ++p)
     if (const auto bspline = limit.regular_bspline_points(p)) {
       exact[p] = bezier_of(*bspline);
-      for (int c = 0; c < 4; ++c)
-        exact[p]->points[side_index(c, 0, 4)] = corners[p][c];
+      for (int c = 0; c < 4; ++c) exact[p]->points[side_index(c, 0, 4)] = corners[p][c];
     }
   // Sides between exact patches: the owner's row in both, bit for bit.
   for (int e = 0; e < edges; ++e) {
     const auto [p, k] = sides.owner[e];
     const auto other = limit.neighbour(p, k);
-    if (!exact[p] || other.patch < 0 || !exact[other.patch])
-      continue;
+    if (!exact[p] || other.patch < 0 || !exact[other.patch]) continue;
     Row row = side_row(*exact[p], k);
     std::reverse(row.begin(), row.end());
     set_side_row(*exact[other.patch], other.side, row);
@@ -221,26 +183,21 @@ SubdNurbs subd_to_nurbs(const SubdControlNet &net, double deviation,
 
   SubdNurbs result;
   std::vector<NurbsSurface> fitted(patches);
-  const bool any_fitted =
-      std::any_of(exact.begin(), exact.end(), [](const auto &s) { return !s; });
+  const bool any_fitted = std::any_of(exact.begin(), exact.end(), [](const auto& s) { return !s; });
   for (int level = 1; any_fitted; ++level) {
-    const int spans = 1 << level;
-    const std::vector<double> params = fit_params(spans);
+    const std::vector<double> knots = subd_nurbs::graded_cubic_knots(level);
+    const std::vector<double> params = subd_nurbs::sample_params(knots, 4, 6);
     // Side curves of fitted patches, in their owner's direction.
     std::vector<Row> curves(edges);
     for (int e = 0; e < edges; ++e) {
       const auto [p, k] = sides.owner[e];
       const auto other = limit.neighbour(p, k);
-      const bool owner_exact = exact[p].has_value(),
-                 other_exact = other.patch < 0 || exact[other.patch];
-      if (owner_exact && other_exact)
-        continue;
+      const bool owner_exact = exact[p].has_value(), other_exact = other.patch < 0 || exact[other.patch];
+      if (owner_exact && other_exact) continue;
       if (owner_exact || other_exact) {
-        const int q = owner_exact ? p : other.patch,
-                  side = owner_exact ? k : other.side;
-        curves[e] = refined_side(side_row(*exact[q], side), spans);
-        if (!owner_exact)
-          std::reverse(curves[e].begin(), curves[e].end());
+        const int q = owner_exact ? p : other.patch, side = owner_exact ? k : other.side;
+        curves[e] = refined_side(side_row(*exact[q], side), knots);
+        if (!owner_exact) std::reverse(curves[e].begin(), curves[e].end());
         continue;
       }
       Row samples;
@@ -248,52 +205,42 @@ SubdNurbs subd_to_nurbs(const SubdControlNet &net, double deviation,
         const Eigen::Vector2d uv = side_uv(k, t);
         samples.push_back(limit.point(p, uv.x(), uv.y()));
       }
-      curves[e] = subd_nurbs::fit_cubic_curve(
-          spans, params, samples, corners[p][k], corners[p][(k + 1) % 4]);
+      curves[e] = subd_nurbs::fit_cubic_curve(knots, params, samples, corners[p][k], corners[p][(k + 1) % 4]);
     }
     double worst = 0;
     const std::vector<double> checks = check_params(params);
     for (int p = 0; p < patches; ++p) {
-      if (exact[p])
-        continue;
-      NurbsSurface &s = fitted[p] = uniform_surface(spans);
+      if (exact[p]) continue;
+      NurbsSurface& s = fitted[p] = fitted_surface(knots);
       for (int k = 0; k < 4; ++k) {
         Row row = curves[sides.number[p][k]];
-        if (sides.reversed[p][k])
-          std::reverse(row.begin(), row.end());
+        if (sides.reversed[p][k]) std::reverse(row.begin(), row.end());
         set_side_row(s, k, row);
       }
       Row samples;
       samples.reserve(params.size() * params.size());
       for (double v : params)
-        for (double u : params)
-          samples.push_back(limit.point(p, u, v));
-      subd_nurbs::fit_cubic_surface_interior(spans, params, samples, s.points);
+        for (double u : params) samples.push_back(limit.point(p, u, v));
+      subd_nurbs::fit_cubic_surface_interior(knots, params, samples, s.points);
       for (double v : checks)
-        for (double u : checks)
-          worst = std::max(
-              worst, (surface_point(s, u, v) - limit.point(p, u, v)).norm());
+        for (double u : checks) worst = std::max(worst, (surface_point(s, u, v) - limit.point(p, u, v)).norm());
     }
     if (worst <= deviation) {
-      result.fitted_spans = spans;
+      result.fitted_levels = level;
       result.fitted_deviation = worst;
       break;
     }
-    if (level == kMaxSpanLevel)
-      throw GeometryError(
-          entity, "the patches around extraordinary points stay " +
-                      std::to_string(worst) + " from the limit surface at " +
-                      std::to_string(spans) + " spans, above the deviation " +
-                      std::to_string(deviation));
+    if (level == kMaxLevel)
+      throw GeometryError(entity, "the patches around extraordinary points stay " + std::to_string(worst) +
+                                      " from the limit surface with spans down to 2^-" + std::to_string(level) +
+                                      ", above the deviation " + std::to_string(deviation));
   }
 
   for (int p = 0; p < patches; ++p) {
     TrimmedSurface patch;
     patch.surface = exact[p] ? *exact[p] : fitted[p];
     TrimLoop loop = domain_loop(patch.surface);
-    for (int k = 0; k < 4; ++k)
-      loop.edges.push_back(
-          {first_edge_number + sides.number[p][k], sides.reversed[p][k]});
+    for (int k = 0; k < 4; ++k) loop.edges.push_back({first_edge_number + sides.number[p][k], sides.reversed[p][k]});
     patch.loops.push_back(std::move(loop));
     result.patches.push_back(std::move(patch));
     ++(exact[p] ? result.exact_patches : result.fitted_patches);
@@ -302,4 +249,4 @@ SubdNurbs subd_to_nurbs(const SubdControlNet &net, double deviation,
   return result;
 }
 
-} // namespace cadnurbs
+}  // namespace cadnurbs

@@ -1,40 +1,33 @@
 #pragma once
-// A Catmull-Clark SubD (SubdControlNet: Rhino's level 0) as NURBS patches, for
-// the converters (issue 38).
+// A Catmull-Clark SubD (SubdControlNet: Rhino's level 0) as NURBS patches, for the converters (issue 38).
 //
-// In: the net (points in model units), the deviation D (> 0, same units) the
-// fitted patches must keep, and the first scene-wide edge number to use. Out:
-// one TrimmedSurface per patch of the limit surface (each quad, and each corner
-// of a face of 3, 5, ... sides: the quads one Catmull-Clark step makes of it),
-// over [0, 1]^2 with u from the quad's first point toward its second, v toward
-// its last, so Su x Sv points where the face does (outward). Each is trimmed by
-// its domain loop (domain_loop: sides v = 0, u = 1, v = 1, u = 0,
-// counter-clockwise) whose TrimEdgeRefs number the side; a side two patches
-// share has one number, not reversed on one and reversed on the other, so the
-// certified tessellator meshes the patches watertight; a closed SubD uses every
-// number twice.
+// In: the net (points in model units), the deviation D (> 0, same units) the fitted patches must keep, and
+// the first scene-wide edge number to use. Out: one TrimmedSurface per patch of the limit surface (each
+// quad, and each corner of a face of 3, 5, ... sides: the quads one Catmull-Clark step makes of it), in
+// the order of the faces (a face's corners in order), over [0, 1]^2 with u from the quad's first point
+// toward its second and v toward its last (for a corner k of another face: from point k toward point
+// k + 1, and toward point k - 1), so Su x Sv points where the face does (outward). Each is trimmed by its
+// domain loop (domain_loop: sides v = 0, u = 1, v = 1, u = 0, counter-clockwise) whose TrimEdgeRefs number
+// the sides; a side two patches share has one number, not reversed on one and reversed on the other, so
+// the certified tessellator meshes the patches watertight; a closed SubD uses every number twice.
 //
-// Exact patches: a quad whose four points are regular (valence 4 inside; the
-// boundary and crease cases OpenSubdiv treats as regular: a straight run of
-// crease or boundary edges, corners of valence 2) is one uniform bicubic
-// B-spline patch of its 4 x 4 points (phantom rows 2 P1 - P2 beyond boundaries
-// and creases), written as its Bezier patch (orders 4, knots 0 0 0 0 1 1 1 1):
-// exact to rounding. Fitted patches (every patch that holds an extraordinary
-// point, a dart, a crease end, ...): clamped uniform bicubic B-splines of 2^m
-// spans each way (the same m for all), least squares to limit points sampled on
-// a grid (4 per span and geometric toward the ends), the four boundary rows
-// held: a side shared with an exact patch is that patch's Bezier side with
-// knots inserted (the same curve to rounding), a side between fitted patches is
-// its own least-squares curve, copied bit for bit into both, with its ends at
-// the limit positions. m goes up from 1 until every fitted patch is within D of
-// the limit points sampled between the fit's samples (a sampled maximum, not a
-// proven bound), at most 64 spans. Where patches meet at a point its control
-// point is one value, bit for bit: the limit position of the point, from one
-// patch.
+// Exact patches: a quad whose four points are regular (valence 4 inside; the boundary and crease cases
+// OpenSubdiv treats as regular: a straight run of crease or boundary edges, corners of valence 2) is one
+// uniform bicubic B-spline patch of its 4 x 4 points (phantom rows 2 P1 - P2 beyond boundaries and
+// creases), written as its Bezier patch (orders 4, knots 0 0 0 0 1 1 1 1): exact to rounding.
+// Fitted patches (every patch that holds an extraordinary point, a dart, a crease end...): clamped bicubic
+// B-splines on knots graded toward both ends, 2^-k, ..., 1/4, 1/2, 3/4, ..., 1 - 2^-k (2k spans each way,
+// the same k for all); on these knots the limit surface is exactly bicubic everywhere but the corner
+// spans at the extraordinary points. Least squares to limit points sampled on a grid (5 per span and 6
+// more, geometric, inside each end span), the four boundary rows held: a side shared with an exact patch
+// is that patch's Bezier side with the knots inserted (the same curve to rounding), a side between fitted
+// patches is its own least-squares curve, copied bit for bit into both, ending at the limit positions.
+// k goes up from 1 until every fitted patch is within D of limit points sampled halfway between the fit's
+// samples (a sampled maximum, not a proven bound); at most k = 10 (OpenSubdiv's deepest isolation).
+// Where patches meet at a point its control point is one value, bit for bit: the limit position there.
 //
-// Refuses (GeometryError(entity, reason)): what SubdLimitSurface refuses
-// (non-manifold edges, faces not consistently oriented, invalid nets), D <= 0,
-// and a fit that stays above D at 64 spans.
+// Refuses (GeometryError(entity, reason)): what SubdLimitSurface refuses (non-manifold edges, faces not
+// consistently oriented, invalid nets), D <= 0, and a fit that stays above D at k = 10.
 #include <string>
 #include <vector>
 
@@ -45,18 +38,14 @@ namespace cadnurbs {
 
 struct SubdNurbs {
   std::vector<TrimmedSurface> patches;
-  int edges_used =
-      0; // edge numbers first_edge_number .. first_edge_number + edges_used - 1
+  int edges_used = 0;  // edge numbers first_edge_number .. first_edge_number + edges_used - 1
   int exact_patches = 0, fitted_patches = 0;
-  int fitted_spans = 0; // spans each way of every fitted patch (0: none fitted)
-  double fitted_deviation =
-      0; // largest distance of a fitted patch from the limit points, sampled
-  bool deviation_is_sampled =
-      true; // fitted_deviation is a sampled maximum, not a proven bound
+  int fitted_levels = 0;             // k of the fitted patches' knots: 2k spans, the end ones 2^-k (0: none)
+  double fitted_deviation = 0;       // largest distance of a fitted patch from the limit points, sampled
+  bool deviation_is_sampled = true;  // fitted_deviation is a sampled maximum, not a proven bound
 };
 
-SubdNurbs subd_to_nurbs(const SubdControlNet &net, double deviation,
-                        int first_edge_number,
-                        const std::string &entity = "SubD");
+SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_edge_number,
+                        const std::string& entity = "SubD");
 
-} // namespace cadnurbs
+}  // namespace cadnurbs

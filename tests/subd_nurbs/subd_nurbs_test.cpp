@@ -1,6 +1,5 @@
-// subd_to_nurbs against closed forms: Catmull-Clark limit-position masks, the
-// cubic B-spline of a crease, and limit points of our own uniform Catmull-Clark
-// refinement (written here, independent of OpenSubdiv).
+// subd_to_nurbs against closed forms: Catmull-Clark limit-position masks, the cubic B-spline of a crease, and limit
+// points of our own uniform Catmull-Clark refinement (written here, independent of OpenSubdiv).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -17,43 +16,34 @@ namespace {
 
 using Eigen::Vector3d;
 
-// A torus of `around` x `across` quads (every point valence 4), faces
-// counter-clockwise from outside.
+// A torus of `around` x `across` quads (every point valence 4), faces counter-clockwise from outside.
 SubdControlNet torus_net(int around, int across) {
   SubdControlNet net;
   for (int j = 0; j < across; ++j)
     for (int i = 0; i < around; ++i) {
-      const double a = 2 * std::numbers::pi * i / around,
-                   b = 2 * std::numbers::pi * j / across;
-      net.points.emplace_back((3 + std::cos(b)) * std::cos(a),
-                              (3 + std::cos(b)) * std::sin(a),
-                              std::sin(b) + 0.1 * i);
+      const double a = 2 * std::numbers::pi * i / around, b = 2 * std::numbers::pi * j / across;
+      net.points.emplace_back((3 + std::cos(b)) * std::cos(a), (3 + std::cos(b)) * std::sin(a), std::sin(b) + 0.1 * i);
     }
   auto id = [&](int i, int j) { return (i % around) + around * (j % across); };
   for (int j = 0; j < across; ++j)
-    for (int i = 0; i < around; ++i)
-      net.faces.push_back(
-          {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+    for (int i = 0; i < around; ++i) net.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
   return net;
 }
 
 SubdControlNet cube_net() {
   SubdControlNet net;
-  for (int k = 0; k < 8; ++k)
-    net.points.emplace_back(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
-  net.points[7] = {1.3, 1.2, 1.1}; // not symmetric, so that a wrong mask shows
-  net.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-               {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int k = 0; k < 8; ++k) net.points.emplace_back(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+  net.points[7] = {1.3, 1.2, 1.1};  // not symmetric, so that a wrong mask shows
+  net.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   return net;
 }
 
-// Catmull-Clark limit position of an interior point of an all-quad net: (n^2 v
-// + 4 sum e + sum f) / (n (n + 5)), e its edge neighbours, f the opposite
-// points of its quads.
-Vector3d limit_position(const SubdControlNet &net, int v) {
+// Catmull-Clark limit position of an interior point of an all-quad net: (n^2 v + 4 sum e + sum f) / (n (n + 5)), e its
+// edge neighbours, f the opposite points of its quads.
+Vector3d limit_position(const SubdControlNet& net, int v) {
   Vector3d edges = Vector3d::Zero(), opposite = Vector3d::Zero();
   int n = 0;
-  for (const auto &face : net.faces)
+  for (const auto& face : net.faces)
     for (int k = 0; k < 4; ++k)
       if (face[k] == v) {
         edges += net.points[face[(k + 1) % 4]];
@@ -63,13 +53,13 @@ Vector3d limit_position(const SubdControlNet &net, int v) {
   return (n * n * net.points[v] + 4 * edges + opposite) / (n * (n + 5.0));
 }
 
-Vector3d corner_point(const NurbsSurface &s, int corner) {
+Vector3d corner_point(const NurbsSurface& s, int corner) {
   static constexpr double kUv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   return surface_point(s, kUv[corner][0], kUv[corner][1]);
 }
 
 // The control points of side k (v = 0, u = 1, v = 1, u = 0), counter-clockwise.
-std::vector<Vector3d> side_points(const NurbsSurface &s, int k) {
+std::vector<Vector3d> side_points(const NurbsSurface& s, int k) {
   std::vector<Vector3d> row;
   const int last = s.u_count - 1;
   for (int t = 0; t <= last; ++t) {
@@ -82,79 +72,69 @@ std::vector<Vector3d> side_points(const NurbsSurface &s, int k) {
   return row;
 }
 
-// Every edge number is used by exactly two sides, once reversed, and the two
-// sides' control rows are the same points in opposite order, bit for bit, when
-// both patches have the same number of points along it. Returns how many shared
-// sides were compared bit for bit.
-int expect_closed_and_shared(const SubdNurbs &result, int first) {
-  std::map<int, std::vector<std::pair<int, int>>> uses; // edge -> (patch, side)
+// Every edge number is used by exactly two sides, once reversed, and the two sides' control rows are the same points in
+// opposite order, bit for bit, when both patches have the same number of points along it. Returns how many shared sides
+// were compared bit for bit.
+int expect_closed_and_shared(const SubdNurbs& result, int first) {
+  std::map<int, std::vector<std::pair<int, int>>> uses;  // edge -> (patch, side)
   for (size_t p = 0; p < result.patches.size(); ++p) {
-    const auto &loop = result.patches[p].loops.at(0);
+    const auto& loop = result.patches[p].loops.at(0);
     EXPECT_EQ(loop.edges.size(), 4u);
-    for (int k = 0; k < 4; ++k)
-      uses[loop.edges[k].edge].push_back({static_cast<int>(p), k});
+    for (int k = 0; k < 4; ++k) uses[loop.edges[k].edge].push_back({static_cast<int>(p), k});
   }
   EXPECT_EQ(static_cast<int>(uses.size()), result.edges_used);
   EXPECT_EQ(uses.begin()->first, first);
   EXPECT_EQ(uses.rbegin()->first, first + result.edges_used - 1);
   int bitwise = 0;
-  for (const auto &[edge, sides] : uses) {
+  for (const auto& [edge, sides] : uses) {
     EXPECT_EQ(sides.size(), 2u) << "edge " << edge;
-    if (sides.size() != 2)
-      continue;
-    const auto &[p, k] = sides[0];
-    const auto &[q, l] = sides[1];
-    EXPECT_NE(result.patches[p].loops[0].edges[k].reversed,
-              result.patches[q].loops[0].edges[l].reversed);
-    const auto &a = result.patches[p].surface;
-    const auto &b = result.patches[q].surface;
+    if (sides.size() != 2) continue;
+    const auto& [p, k] = sides[0];
+    const auto& [q, l] = sides[1];
+    EXPECT_NE(result.patches[p].loops[0].edges[k].reversed, result.patches[q].loops[0].edges[l].reversed);
+    const auto& a = result.patches[p].surface;
+    const auto& b = result.patches[q].surface;
     for (double t : {0.0, 0.1, 0.37, 0.5, 0.83, 1.0}) {
       static constexpr double kStart[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
       static constexpr double kStep[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-      const Vector3d on_a = surface_point(a, kStart[k][0] + t * kStep[k][0],
-                                          kStart[k][1] + t * kStep[k][1]);
+      const Vector3d on_a = surface_point(a, kStart[k][0] + t * kStep[k][0], kStart[k][1] + t * kStep[k][1]);
       const Vector3d on_b =
-          surface_point(b, kStart[l][0] + (1 - t) * kStep[l][0],
-                        kStart[l][1] + (1 - t) * kStep[l][1]);
+          surface_point(b, kStart[l][0] + (1 - t) * kStep[l][0], kStart[l][1] + (1 - t) * kStep[l][1]);
       EXPECT_LT((on_a - on_b).norm(), 1e-13) << "edge " << edge << " t " << t;
     }
-    if (a.u_count != b.u_count)
-      continue;
+    if (a.u_count != b.u_count) continue;
     auto row_a = side_points(a, k), row_b = side_points(b, l);
     std::reverse(row_b.begin(), row_b.end());
-    for (size_t i = 0; i < row_a.size(); ++i)
-      EXPECT_TRUE(row_a[i] == row_b[i]) << "edge " << edge << " point " << i;
+    for (size_t i = 0; i < row_a.size(); ++i) EXPECT_TRUE(row_a[i] == row_b[i]) << "edge " << edge << " point " << i;
     ++bitwise;
   }
   return bitwise;
 }
 
-// One uniform Catmull-Clark step of a closed all-quad net without creases.
-// Child faces keep their parent's orientation: child k of face (a, b, c, d)
-// starts at the child of its k-th point, so after L steps face f's child (i, j)
-// covers [i, i+1] x [j, j+1] / 2^L of the parent's (u, v) domain.
+// One uniform Catmull-Clark step of a closed net without creases (faces of any size; all quads after it). Child faces
+// keep their parent quad's orientation: child k of quad (a, b, c, d) starts at the child of its k-th point when k = 0,
+// and where the parent's (u, v) is least otherwise, so after L steps face f's child (i, j) covers [i, i+1] x [j, j+1] /
+// 2^L of the parent's (u, v) domain. Child k of a face of n != 4 points is patch k of that face (subd_to_nurbs'
+// numbering): it starts at the face's k-th point, u toward its next point.
 struct Refined {
   SubdControlNet net;
-  std::vector<std::array<double, 3>>
-      origin;      // per face: base face, u, v of its first point
-  double size = 1; // side of each face in base (u, v)
+  std::vector<std::array<double, 4>> origin;  // per face: patch, u, v of its first point, side in (u, v)
 };
 
-Refined catmull_clark_step(const Refined &in) {
-  const auto &net = in.net;
+Refined catmull_clark_step(const Refined& in) {
+  const auto& net = in.net;
   Refined out;
-  out.size = in.size / 2;
   const int points = static_cast<int>(net.points.size());
   std::map<std::pair<int, int>, std::vector<int>> faces_of_edge;
   std::vector<std::vector<int>> faces_of_point(points);
   std::vector<Vector3d> face_point;
   for (size_t f = 0; f < net.faces.size(); ++f) {
+    const auto& face = net.faces[f];
     Vector3d c = Vector3d::Zero();
-    for (int k = 0; k < 4; ++k) {
-      const int a = net.faces[f][k], b = net.faces[f][(k + 1) % 4];
-      c += net.points[a] / 4;
-      faces_of_edge[{std::min(a, b), std::max(a, b)}].push_back(
-          static_cast<int>(f));
+    for (size_t k = 0; k < face.size(); ++k) {
+      const int a = face[k], b = face[(k + 1) % face.size()];
+      c += net.points[a] / static_cast<double>(face.size());
+      faces_of_edge[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(f));
       faces_of_point[a].push_back(static_cast<int>(f));
     }
     face_point.push_back(c);
@@ -162,73 +142,63 @@ Refined catmull_clark_step(const Refined &in) {
   // New points: vertex points, then edge points, then face points.
   out.net.points.resize(points);
   std::map<std::pair<int, int>, int> edge_index;
-  for (const auto &[edge, faces] : faces_of_edge) {
-    edge_index[edge] = static_cast<int>(out.net.points.size());
-    out.net.points.push_back((net.points[edge.first] + net.points[edge.second] +
-                              face_point[faces[0]] + face_point[faces[1]]) /
-                             4);
-  }
   std::vector<Vector3d> edge_mid_sum(points, Vector3d::Zero());
-  for (const auto &[edge, faces] : faces_of_edge) {
-    const Vector3d mid = (net.points[edge.first] + net.points[edge.second]) / 2;
-    edge_mid_sum[edge.first] += mid;
-    edge_mid_sum[edge.second] += mid;
+  for (const auto& [edge, faces] : faces_of_edge) {
+    const auto [a, b] = edge;
+    edge_index[edge] = static_cast<int>(out.net.points.size());
+    out.net.points.push_back((net.points[a] + net.points[b] + face_point[faces[0]] + face_point[faces[1]]) / 4);
+    edge_mid_sum[a] += (net.points[a] + net.points[b]) / 2;
+    edge_mid_sum[b] += (net.points[a] + net.points[b]) / 2;
   }
   for (int v = 0; v < points; ++v) {
     const double n = static_cast<double>(faces_of_point[v].size());
     Vector3d f = Vector3d::Zero();
-    for (int face : faces_of_point[v])
-      f += face_point[face];
-    out.net.points[v] =
-        (f / n + 2 * edge_mid_sum[v] / n + (n - 3) * net.points[v]) / n;
+    for (int face : faces_of_point[v]) f += face_point[face];
+    out.net.points[v] = (f / n + 2 * edge_mid_sum[v] / n + (n - 3) * net.points[v]) / n;
   }
   const int first_face_point = static_cast<int>(out.net.points.size());
-  out.net.points.insert(out.net.points.end(), face_point.begin(),
-                        face_point.end());
+  out.net.points.insert(out.net.points.end(), face_point.begin(), face_point.end());
   static constexpr double kChildUv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   for (size_t f = 0; f < net.faces.size(); ++f) {
-    const auto &q = net.faces[f];
+    const auto& q = net.faces[f];
+    const int n = static_cast<int>(q.size());
     auto e = [&](int k) {
-      const int a = q[k % 4], b = q[(k + 1) % 4];
+      const int a = q[k % n], b = q[(k + 1) % n];
       return edge_index[{std::min(a, b), std::max(a, b)}];
     };
     const int c = first_face_point + static_cast<int>(f);
-    for (int k = 0; k < 4; ++k) {
-      // Child k: (corner k, edge k, centre, edge k-1), rotated so that it
-      // starts where the parent's (u, v) is least: child 0 starts at corner 0,
-      // child 1 at edge 0, child 2 at the centre, child 3 at edge 3.
-      const std::array<int, 4> child = {q[k], e(k), c, e(k + 3)};
+    const auto [patch, u, v, size] = in.origin[f];
+    for (int k = 0; k < n; ++k) {
+      const std::array<int, 4> child = {q[k], e(k), c, e(k + n - 1)};
+      if (n != 4) {
+        out.net.faces.push_back({child.begin(), child.end()});
+        out.origin.push_back({patch + k, 0, 0, 1});
+        continue;
+      }
       std::array<int, 4> rotated;
-      for (int r = 0; r < 4; ++r)
-        rotated[r] = child[(r - k + 4) % 4];
+      for (int r = 0; r < 4; ++r) rotated[r] = child[(r - k + 4) % 4];
       out.net.faces.push_back({rotated.begin(), rotated.end()});
-      out.origin.push_back({in.origin[f][0],
-                            in.origin[f][1] + kChildUv[k][0] * out.size,
-                            in.origin[f][2] + kChildUv[k][1] * out.size});
+      out.origin.push_back({patch, u + kChildUv[k][0] * size / 2, v + kChildUv[k][1] * size / 2, size / 2});
     }
   }
   return out;
 }
 
-// The largest distance between the patches and the limit points of our own
-// refinement after `levels` steps (every refined face's first point, at its (u,
-// v) in its base face = patch).
-double distance_to_refined_limit(const SubdControlNet &net,
-                                 const SubdNurbs &result, int levels) {
-  Refined refined{net, {}, 1};
-  for (size_t f = 0; f < net.faces.size(); ++f)
-    refined.origin.push_back({static_cast<double>(f), 0, 0});
-  for (int l = 0; l < levels; ++l)
-    refined = catmull_clark_step(refined);
+// The largest distance between the patches and the limit points of our own refinement after `levels` steps (every
+// refined face's first point, at its (u, v) in its patch).
+double distance_to_refined_limit(const SubdControlNet& net, const SubdNurbs& result, int levels) {
+  Refined refined{net, {}};
+  int patch = 0;
+  for (const auto& face : net.faces) {
+    refined.origin.push_back({static_cast<double>(patch), 0, 0, 1});
+    patch += face.size() == 4 ? 1 : static_cast<int>(face.size());
+  }
+  for (int l = 0; l < levels; ++l) refined = catmull_clark_step(refined);
   double worst = 0;
   for (size_t f = 0; f < refined.net.faces.size(); ++f) {
-    const auto &[patch, u, v] = refined.origin[f];
+    const auto& [p, u, v, size] = refined.origin[f];
     const Vector3d exact = limit_position(refined.net, refined.net.faces[f][0]);
-    worst = std::max(
-        worst,
-        (surface_point(result.patches[static_cast<int>(patch)].surface, u, v) -
-         exact)
-            .norm());
+    worst = std::max(worst, (surface_point(result.patches[static_cast<int>(p)].surface, u, v) - exact).norm());
   }
   return worst;
 }
@@ -241,13 +211,10 @@ TEST(SubdToNurbs, RegularTorusIsExactBicubicPatches) {
   EXPECT_EQ(result.fitted_patches, 0);
   EXPECT_EQ(result.edges_used, 60);
   for (size_t f = 0; f < net.faces.size(); ++f) {
-    const auto &s = result.patches[f].surface;
+    const auto& s = result.patches[f].surface;
     EXPECT_EQ(s.u_count, 4);
     for (int c = 0; c < 4; ++c)
-      EXPECT_LT(
-          (corner_point(s, c) - limit_position(net, net.faces[f][c])).norm(),
-          1e-12)
-          << "face " << f;
+      EXPECT_LT((corner_point(s, c) - limit_position(net, net.faces[f][c])).norm(), 1e-12) << "face " << f;
   }
   EXPECT_EQ(expect_closed_and_shared(result, 100), 60);
   // Inside the patches too: limit points of two refinement steps.
@@ -265,27 +232,19 @@ TEST(SubdToNurbs, CubeFitsWithinTheDeviation) {
   EXPECT_LE(result.fitted_deviation, deviation);
   for (size_t f = 0; f < net.faces.size(); ++f)
     for (int c = 0; c < 4; ++c)
-      EXPECT_LT((corner_point(result.patches[f].surface, c) -
-                 limit_position(net, net.faces[f][c]))
-                    .norm(),
-                1e-12);
+      EXPECT_LT((corner_point(result.patches[f].surface, c) - limit_position(net, net.faces[f][c])).norm(), 1e-12);
   EXPECT_EQ(expect_closed_and_shared(result, 0), 12);
-  // Limit points of our own refinement, 5 steps deep (1024 per face), none of
-  // them a fit sample.
+  // Limit points of our own refinement, 5 steps deep (1024 per face), none of them a fit sample.
   EXPECT_LE(distance_to_refined_limit(net, result, 5), deviation);
-  // Normals point outward: from the centre of the cube through the middle of
-  // each patch.
-  for (const auto &patch : result.patches)
-    EXPECT_GT(surface_normal(patch.surface, 0.5, 0.5)
-                  .dot(surface_point(patch.surface, 0.5, 0.5)),
-              0);
+  // Normals point outward: from the centre of the cube through the middle of each patch.
+  for (const auto& patch : result.patches)
+    EXPECT_GT(surface_normal(patch.surface, 0.5, 0.5).dot(surface_point(patch.surface, 0.5, 0.5)), 0);
 }
 
 TEST(SubdToNurbs, CreaseIsTheCubicBsplineOfItsPoints) {
   SubdControlNet net = torus_net(6, 5);
-  const int ring = 2; // the points (i, 2), i = 0..5, a closed crease
-  for (int i = 0; i < 6; ++i)
-    net.crease_edges.push_back({i + 6 * ring, (i + 1) % 6 + 6 * ring});
+  const int ring = 2;  // the points (i, 2), i = 0..5, a closed crease
+  for (int i = 0; i < 6; ++i) net.crease_edges.push_back({i + 6 * ring, (i + 1) % 6 + 6 * ring});
   const SubdNurbs result = subd_to_nurbs(net, 1e-3, 0);
   EXPECT_EQ(result.exact_patches, 30);
   expect_closed_and_shared(result, 0);
@@ -293,46 +252,89 @@ TEST(SubdToNurbs, CreaseIsTheCubicBsplineOfItsPoints) {
   for (size_t f = 0; f < net.faces.size(); ++f)
     for (int k = 0; k < 4; ++k) {
       const int a = net.faces[f][k], b = net.faces[f][(k + 1) % 4];
-      if (a / 6 != ring || b / 6 != ring)
-        continue;
+      if (a / 6 != ring || b / 6 != ring) continue;
       ++sides_on_crease;
-      // The curve from crease point a to b: B-spline segment of the crease
-      // points before a to after b.
+      // The curve from crease point a to b: B-spline segment of the crease points before a to after b.
       const bool forward = b == (a + 1) % 6 + 6 * ring;
-      auto crease = [&](int step) {
-        return net
-            .points[((a % 6) + (forward ? step : -step) + 12) % 6 + 6 * ring];
-      };
-      const Vector3d p0 = crease(-1), p1 = crease(0), p2 = crease(1),
-                     p3 = crease(2);
+      auto crease = [&](int step) { return net.points[((a % 6) + (forward ? step : -step) + 12) % 6 + 6 * ring]; };
+      const Vector3d p0 = crease(-1), p1 = crease(0), p2 = crease(1), p3 = crease(2);
       for (double t : {0.0, 0.25, 0.5, 0.9, 1.0}) {
         const double s = 1 - t;
-        const Vector3d expected =
-            (s * s * s * p0 + (3 * t * t * t - 6 * t * t + 4) * p1 +
-             (-3 * t * t * t + 3 * t * t + 3 * t + 1) * p2 + t * t * t * p3) /
-            6;
+        const Vector3d expected = (s * s * s * p0 + (3 * t * t * t - 6 * t * t + 4) * p1 +
+                                   (-3 * t * t * t + 3 * t * t + 3 * t + 1) * p2 + t * t * t * p3) /
+                                  6;
         static constexpr double kStart[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        static constexpr double kStep[4][2] = {
-            {1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-        const Vector3d got = surface_point(result.patches[f].surface,
-                                           kStart[k][0] + t * kStep[k][0],
-                                           kStart[k][1] + t * kStep[k][1]);
-        EXPECT_LT((got - expected).norm(), 1e-12)
-            << "face " << f << " side " << k << " t " << t;
+        static constexpr double kStep[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+        const Vector3d got =
+            surface_point(result.patches[f].surface, kStart[k][0] + t * kStep[k][0], kStart[k][1] + t * kStep[k][1]);
+        EXPECT_LT((got - expected).norm(), 1e-12) << "face " << f << " side " << k << " t " << t;
       }
     }
-  EXPECT_EQ(sides_on_crease, 12); // 6 crease edges, a face on each side
+  EXPECT_EQ(sides_on_crease, 12);  // 6 crease edges, a face on each side
+}
+
+// A pentagonal pyramid: one face of 5 sides, five of 3, every patch around an extraordinary point.
+TEST(SubdToNurbs, FacesOfThreeAndFiveSidesFitWithinTheDeviation) {
+  SubdControlNet net;
+  for (int k = 0; k < 5; ++k)
+    net.points.emplace_back(std::cos(2 * std::numbers::pi * k / 5), std::sin(2 * std::numbers::pi * k / 5), 0);
+  net.points.emplace_back(0.1, 0.2, 1.5);
+  net.faces.push_back({4, 3, 2, 1, 0});
+  for (int k = 0; k < 5; ++k) net.faces.push_back({k, (k + 1) % 5, 5});
+  const double deviation = 1e-3;
+  const auto start = std::chrono::steady_clock::now();
+  const SubdNurbs result = subd_to_nurbs(net, deviation, 7);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_EQ(result.patches.size(), 20u);
+  EXPECT_EQ(result.fitted_patches, 20);
+  EXPECT_EQ(result.edges_used, 40);  // 5 + 15 sides of the net halved, and 5 + 15 from face centres
+  EXPECT_LE(result.fitted_deviation, deviation);
+  expect_closed_and_shared(result, 7);
+  EXPECT_LE(distance_to_refined_limit(net, result, 4), deviation);
+  const Vector3d inside(0.05, 0.1, 0.4);
+  for (const auto& patch : result.patches)
+    EXPECT_GT(surface_normal(patch.surface, 0.5, 0.5).dot(surface_point(patch.surface, 0.5, 0.5) - inside), 0);
+  std::cout << "pyramid: " << result.fitted_patches << " fitted patches, k = " << result.fitted_levels
+            << ", sampled deviation " << result.fitted_deviation << ", " << 1e3 * seconds / 20 << " ms a patch\n";
+}
+
+// An open 4 x 4 grid, its four corners tagged: boundaries are creases, so every patch is regular, the boundary is the
+// cubic B-spline of the boundary points ending at the corners (phantom 2 P0 - P1).
+TEST(SubdToNurbs, OpenGridKeepsCornersAndBoundaryCurves) {
+  SubdControlNet net;
+  auto id = [](int i, int j) { return i + 5 * j; };
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) net.points.emplace_back(i, j, 0.1 * i * i - 0.05 * j * i + 0.02 * j * j * j);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) net.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  net.corner_points = {id(0, 0), id(4, 0), id(4, 4), id(0, 4)};
+  const SubdNurbs result = subd_to_nurbs(net, 1e-3, 0);
+  EXPECT_EQ(result.exact_patches, 16);
+  EXPECT_EQ(result.edges_used, 40);
+  EXPECT_TRUE(surface_point(result.patches[0].surface, 0, 0).isApprox(net.points[0], 1e-14));
+  EXPECT_TRUE(surface_point(result.patches[15].surface, 1, 1).isApprox(net.points[24], 1e-14));
+  // The side v = 0: B-spline of points (i, 0) with phantoms beyond both ends.
+  std::vector<Vector3d> row = {2 * net.points[0] - net.points[1]};
+  for (int i = 0; i < 5; ++i) row.push_back(net.points[i]);
+  row.push_back(2 * net.points[4] - net.points[3]);
+  for (int i = 0; i < 4; ++i)
+    for (double t : {0.0, 0.3, 0.5, 1.0}) {
+      const double s = 1 - t;
+      const Vector3d expected = (s * s * s * row[i] + (3 * t * t * t - 6 * t * t + 4) * row[i + 1] +
+                                 (-3 * t * t * t + 3 * t * t + 3 * t + 1) * row[i + 2] + t * t * t * row[i + 3]) /
+                                6;
+      EXPECT_LT((surface_point(result.patches[i].surface, t, 0) - expected).norm(), 1e-12) << i << " " << t;
+    }
 }
 
 TEST(SubdToNurbs, RefusesANonManifoldEdge) {
   SubdControlNet net;
-  net.points = {{0, 0, 0},  {1, 0, 0},  {1, 1, 0}, {0, 1, 0},
-                {1, -1, 0}, {0, -1, 0}, {1, 0, 1}, {0, 0, 1}};
+  net.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, -1, 0}, {0, -1, 0}, {1, 0, 1}, {0, 0, 1}};
   net.faces = {{0, 1, 2, 3}, {1, 0, 5, 4}, {1, 0, 7, 6}};
   try {
     subd_to_nurbs(net, 1e-3, 0);
     FAIL() << "accepted a non-manifold edge";
-  } catch (const GeometryError &e) {
+  } catch (const GeometryError& e) {
     EXPECT_STREQ(e.what(), "SubD: edge 0-1 has 3 or more faces (non-manifold)");
   }
   net.faces.pop_back();
@@ -341,11 +343,12 @@ TEST(SubdToNurbs, RefusesANonManifoldEdge) {
   try {
     subd_to_nurbs(net, 1e-3, 0);
     FAIL() << "accepted two faces running one edge the same way";
-  } catch (const GeometryError &e) {
-    EXPECT_STREQ(e.what(), "SubD: faces 0 and 1 both run edge 0-1 the same way "
-                           "(orientation not consistent)");
+  } catch (const GeometryError& e) {
+    EXPECT_STREQ(e.what(),
+                 "SubD: faces 0 and 1 both run edge 0-1 the same way "
+                 "(orientation not consistent)");
   }
 }
 
-} // namespace
-} // namespace cadnurbs
+}  // namespace
+}  // namespace cadnurbs
