@@ -3,6 +3,7 @@
 #include <array>
 #include <cstring>
 
+#include "formats/3dm/legacy_objects.hpp"
 #include "formats/3dm/typecodes.hpp"
 #include "formats/common/file_io.hpp"
 
@@ -54,6 +55,22 @@ constexpr std::array<RhinoUnit, 24> kUnits = {{
 }};
 constexpr int kCustomUnits = 11;
 
+// Sets file.unit to the unit of `code`; false when the table does not have it.
+bool set_unit(int code, Rhino3dmFile& file) {
+  for (const RhinoUnit& u : kUnits)
+    if (u.code == code) {
+      file.unit = LengthUnit{u.name, u.millimetres};
+      return true;
+    }
+  return false;
+}
+
+void warn_no_unit(int code, Rhino3dmFile& file) {
+  file.unit = LengthUnit{};
+  file.warnings.push_back(code == 0 ? "the model has no unit system; millimetres assumed"
+                                    : "unknown unit system " + std::to_string(code) + "; millimetres assumed");
+}
+
 // TCODE_SETTINGS_UNITSANDTOLS (ON_3dmUnitsAndTolerances): int version 100..199, unit code, absolute,
 // angle and relative tolerance; from 101 display mode and precision; from 102 metres per unit and the
 // custom unit's name.
@@ -74,18 +91,21 @@ void read_units_and_tolerances(ArchiveReader& reader, Rhino3dmFile& file) {
     metres_per_unit = reader.f64();
     custom_name = reader.wide_string();
   }
-  for (const RhinoUnit& u : kUnits)
-    if (u.code == code) {
-      file.unit = LengthUnit{u.name, u.millimetres};
-      return;
-    }
+  if (set_unit(code, file)) return;
   if (code == kCustomUnits && metres_per_unit > 0) {
     file.unit = LengthUnit{custom_name.empty() ? "custom" : custom_name, metres_per_unit * 1000};
     return;
   }
-  file.unit = LengthUnit{};
-  file.warnings.push_back(code == 0 ? "the model has no unit system; millimetres assumed"
-                                    : "unknown unit system " + std::to_string(code) + "; millimetres assumed");
+  warn_no_unit(code, file);
+}
+
+// A V1 TCODE_UNIT_AND_TOLERANCES chunk: int32 version, unit code (0 none, 1..10 the codes of kUnits),
+// absolute, relative and angle tolerance.
+void read_v1_units_and_tolerances(ArchiveReader& reader, Rhino3dmFile& file) {
+  reader.i32();
+  const std::int32_t code = reader.i32();
+  file.absolute_tolerance = reader.f64();
+  if (code < 1 || code > 10 || !set_unit(code, file)) warn_no_unit(code, file);
 }
 
 // Calls read(header) for each record of the table the reader is in, up to its TCODE_ENDOFTABLE mark (or
@@ -110,16 +130,21 @@ ArchiveReader record_reader(const ArchiveReader& table, std::string_view bytes, 
   return reader;
 }
 
+// The units chunk `h` read by `read` (V2+ record or V1 chunk); unreadable: millimetres, with a warning.
+void read_units(const ArchiveReader& reader, std::string_view bytes, const ChunkHeader& h, Rhino3dmFile& file,
+                void (*read)(ArchiveReader&, Rhino3dmFile&)) {
+  try {
+    ArchiveReader record = record_reader(reader, bytes, h);
+    read(record, file);
+  } catch (const ArchiveError& e) {
+    file.unit = LengthUnit{};
+    file.warnings.push_back(std::string("units and tolerances unreadable (") + e.what() + "); millimetres assumed");
+  }
+}
+
 void read_settings(ArchiveReader& reader, std::string_view bytes, Rhino3dmFile& file) {
   for_each_record(reader, [&](const ChunkHeader& h) {
-    if (h.typecode != tcode::kSettingsUnitsAndTolerances) return;
-    try {
-      ArchiveReader record = record_reader(reader, bytes, h);
-      read_units_and_tolerances(record, file);
-    } catch (const ArchiveError& e) {
-      file.unit = LengthUnit{};
-      file.warnings.push_back(std::string("units and tolerances unreadable (") + e.what() + "); millimetres assumed");
-    }
+    if (h.typecode == tcode::kSettingsUnitsAndTolerances) read_units(reader, bytes, h, file, read_units_and_tolerances);
   });
 }
 
@@ -141,18 +166,23 @@ Layer read_layer(ArchiveReader& reader) {
   return layer;
 }
 
-// A layer that cannot be read keeps its place (objects refer to layers by position) under a made-up name.
+// The layer chunk `h` read by `read` (V2+ record or V1 chunk). A layer that cannot be read keeps its place
+// (objects refer to layers by position) under a made-up name.
+void add_layer(const ArchiveReader& reader, std::string_view bytes, const ChunkHeader& h, Rhino3dmFile& file,
+               Layer (*read)(ArchiveReader&)) {
+  const std::string placeholder = "layer " + std::to_string(file.layers.size());
+  try {
+    ArchiveReader record = record_reader(reader, bytes, h);
+    file.layers.push_back(read(record));
+  } catch (const ArchiveError& e) {
+    file.warnings.push_back(placeholder + ": " + e.what() + "; named \"" + placeholder + "\"");
+    file.layers.push_back(Layer{placeholder, Colour{}});
+  }
+}
+
 void read_layers(ArchiveReader& reader, std::string_view bytes, Rhino3dmFile& file) {
   for_each_record(reader, [&](const ChunkHeader& h) {
-    if (h.typecode != tcode::kLayerRecord) return;
-    const std::string placeholder = "layer " + std::to_string(file.layers.size());
-    try {
-      ArchiveReader record = record_reader(reader, bytes, h);
-      file.layers.push_back(read_layer(record));
-    } catch (const ArchiveError& e) {
-      file.warnings.push_back(placeholder + ": " + e.what() + "; named \"" + placeholder + "\"");
-      file.layers.push_back(Layer{placeholder, Colour{}});
-    }
+    if (h.typecode == tcode::kLayerRecord) add_layer(reader, bytes, h, file, read_layer);
   });
 }
 
@@ -259,13 +289,39 @@ void read_objects(ArchiveReader& reader, std::string_view bytes, Rhino3dmFile& f
   });
 }
 
+// A version 1 body: top-level chunks in any order (no tables); layers, units and objects are read where
+// they are, everything else is stepped over by its length. A layer or the units that cannot be read are
+// replaced as in later versions, with a warning.
+void parse_v1(std::string_view bytes, const std::string& name, Rhino3dmFile& file) {
+  ArchiveReader reader(bytes, name, 1, kStartSize);
+  reader.begin_chunk(tcode::kCommentBlock);
+  reader.end_chunk();
+  bool units_seen = false;
+  int index = 0;
+  while (reader.bytes_left() > 0) {
+    const ChunkHeader h = reader.begin_chunk();
+    if (h.is_short()) continue;
+    if (!v1_object_class(h.typecode).empty()) {
+      file.objects.push_back(read_v1_object(bytes, name, h, index++, file.warnings));
+    } else if (h.typecode == tcode::kUnitAndTolerances) {
+      units_seen = true;
+      read_units(reader, bytes, h, file, read_v1_units_and_tolerances);
+    } else if (h.typecode == tcode::kV1Layer) {
+      add_layer(reader, bytes, h, file, read_v1_layer);
+    }
+    reader.end_chunk();
+    if (h.typecode == tcode::kEndOfFile) break;
+  }
+  if (!units_seen) file.warnings.push_back("no units and tolerances chunk; millimetres assumed");
+}
+
 }  // namespace
 
 Rhino3dmFile parse_3dm(std::string_view bytes, const std::string& name_for_errors) {
   Rhino3dmFile file;
   file.archive_version = start_section_version(bytes, name_for_errors);
   if (file.archive_version == 1) {
-    file.warnings.push_back("version 1 file (Rhino 1 legacy layout, no object table): its objects are not read");
+    parse_v1(bytes, name_for_errors, file);
     return file;
   }
   ArchiveReader reader(bytes, name_for_errors, file.archive_version, kStartSize);

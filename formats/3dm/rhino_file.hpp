@@ -1,7 +1,7 @@
 #pragma once
 // A whole .3dm file: start section and version, unit system and tolerance, layers, and the object table's
 // objects converted by read_object, with their names, layers and colours. Version 1 files (Rhino 1's
-// legacy layout, no tables) come back with no objects and a warning.
+// legacy layout, no tables) give their layers, units and legacy objects (legacy_objects.hpp) the same way.
 #include <optional>
 #include <string>
 #include <string_view>

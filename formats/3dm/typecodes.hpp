@@ -97,7 +97,31 @@ inline constexpr std::uint32_t kOpennurbsClassEnd = kOpennurbsObject | kShort | 
 inline constexpr std::uint32_t kRgb = kShort | kDisplay | 0x0001u;
 inline constexpr std::uint32_t kRgbDisplay = kShort | kDisplay | 0x0006u;
 
-// Version 1 files: legacy geometry and interface chunks instead of tables.
+// Version 1 files: legacy geometry and interface chunks instead of tables. Each legacy geometry chunk
+// wraps one "stuff" chunk (its code | kLegacyStuff) that holds the record.
 inline constexpr std::uint32_t kSummary = kInterface | 0x0013u;
+inline constexpr std::uint32_t kLegacyStuff = 0x0100u;
+inline constexpr std::uint32_t kLegacyShell = kLegacyGeometry | 0x0003u;  // a polysurface
+inline constexpr std::uint32_t kLegacyFace = kLegacyGeometry | 0x0004u;   // a trimmed surface
+inline constexpr std::uint32_t kLegacyLoop = kLegacyGeometry | 0x0005u;   // "boundary"
+inline constexpr std::uint32_t kLegacyTrim = kLegacyGeometry | 0x0006u;
+inline constexpr std::uint32_t kLegacySurface = kLegacyGeometry | 0x0007u;
+inline constexpr std::uint32_t kLegacyCurve = kLegacyGeometry | 0x0008u;
+inline constexpr std::uint32_t kLegacySpline = kLegacyGeometry | 0x0009u;
+inline constexpr std::uint32_t kLegacyShellStuff = kLegacyShell | kLegacyStuff;
+inline constexpr std::uint32_t kLegacyFaceStuff = kLegacyFace | kLegacyStuff;
+inline constexpr std::uint32_t kLegacyLoopStuff = kLegacyLoop | kLegacyStuff;
+inline constexpr std::uint32_t kLegacyTrimStuff = kLegacyTrim | kLegacyStuff;
+inline constexpr std::uint32_t kLegacySurfaceStuff = kLegacySurface | kLegacyStuff;
+inline constexpr std::uint32_t kLegacyCurveStuff = kLegacyCurve | kLegacyStuff;
+inline constexpr std::uint32_t kLegacySplineStuff = kLegacySpline | kLegacyStuff;
+inline constexpr std::uint32_t kMeshObject = kGeometry | 0x0015u;  // a V1 mesh (not read)
+inline constexpr std::uint32_t kRhPoint = kGeometry | 0x0001u;     // a V1 point (not read)
+// V1 object attributes (chunks in front of an object's stuff chunk) and layers.
+inline constexpr std::uint32_t kName = kInterface | 0x0001u;              // int32 length, that many chars
+inline constexpr std::uint32_t kUnitAndTolerances = kInterface | 0x0010u;
+inline constexpr std::uint32_t kLayerRef = kShort | kTableRecord | 0x0001u;  // value: the layer's index
+inline constexpr std::uint32_t kV1Layer = kDisplay | 0x0010u;                // holds the chunks below
+inline constexpr std::uint32_t kV1LayerName = kDisplay | 0x0011u;            // int32 length, chars
 
 }  // namespace cadnurbs::rhino::tcode
