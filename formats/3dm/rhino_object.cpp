@@ -28,7 +28,7 @@ struct ClassRow {
 // Class ids from openNURBS's ON_OBJECT_IMPLEMENT lines; the legacy ids ON_ClassId::ClassId demotes to
 // current classes (TL_... from Rhino 1/2 era files, and the old V2 curve, surface and Brep ids) read as the
 // class they are demoted to. Helpers: curves and surfaces (curve_objects, surface_objects), Brep and
-// Extrusion (brep_object, extrusion_object), meshes (mesh_object).
+// Extrusion (brep_object, extrusion_object), meshes (mesh_object), SubDs (subd_object).
 const std::array kClasses = {
     // Curves.
     ClassRow{"4ED7D4DD-E947-11D3-BFE5-0010830122F0", "ON_NurbsCurve", &as_geometry<read_nurbs_curve>},
@@ -56,15 +56,15 @@ const std::array kClasses = {
     ClassRow{"4ED7D4E2-E947-11D3-BFE5-0010830122F0", "ON_SurfaceProxy", nullptr},  // never in a file: its Write returns false
     ClassRow{"DBC5A584-CE3F-4170-98A8-497069CA5C36", "ON_ClippingPlaneSurface", nullptr},
     ClassRow{"00C61749-D430-4ECC-83A8-29130A20CF9C", "ON_OffsetSurface", nullptr},
-    // Breps, extrusions, meshes.
+    // Breps, extrusions, meshes, SubDs.
     ClassRow{"60B5DBC5-E660-11D3-BFE4-0010830122F0", "ON_Brep", &as_geometry<read_brep>},
     ClassRow{"F06FC243-A32A-4608-9DD8-A7D2C4CE2A36", "ON_Brep", &as_geometry<read_brep>},  // TL_Brep
     ClassRow{"0705FDEF-3E2A-11D4-800E-0010830122F0", "ON_Brep", &as_geometry<read_brep>},  // old trimmed surface
     ClassRow{"2D4CFEDB-3E2A-11D4-800E-0010830122F0", "ON_Brep", &as_geometry<read_brep>},  // old V2 Brep
     ClassRow{"36F53175-72B8-4D47-BF1F-B4E6FC24F4B9", "ON_Extrusion", &as_geometry<read_extrusion>},
     ClassRow{"4ED7D4E4-E947-11D3-BFE5-0010830122F0", "ON_Mesh", &as_geometry<read_mesh>},
+    ClassRow{"F09BA4D9-455B-42C3-BA3B-E6CCACEF853B", "ON_SubD", &as_geometry<read_subd>},
     // Geometry cadnurbs does not convert.
-    ClassRow{"F09BA4D9-455B-42C3-BA3B-E6CCACEF853B", "ON_SubD", nullptr},
     ClassRow{"2488F347-F8FA-11D3-BFEC-0010830122F0", "ON_PointCloud", nullptr},
     ClassRow{"C3101A1D-F157-11D3-BFE7-0010830122F0", "ON_Point", nullptr},
     ClassRow{"4ED7D4E5-E947-11D3-BFE5-0010830122F0", "ON_PointGrid", nullptr},

@@ -10,6 +10,7 @@
 #include "core/triangle_mesh.hpp"
 #include "formats/3dm/archive_reader.hpp"
 #include "formats/3dm/brep_object.hpp"
+#include "formats/3dm/subd_object.hpp"
 
 namespace cadnurbs::rhino {
 
@@ -18,8 +19,9 @@ struct Unsupported {
 };
 
 // Curves come back as NurbsCurve (dimension 2 or 3; a Brep's 2D trims are dimension 2), surfaces as
-// NurbsSurface, Breps and Extrusions as RhinoBrep, meshes as TriangleMesh.
-using RhinoGeometry = std::variant<Unsupported, NurbsCurve, NurbsSurface, RhinoBrep, TriangleMesh>;
+// NurbsSurface, Breps and Extrusions as RhinoBrep, meshes as TriangleMesh, SubDs as RhinoSubd (level 0's
+// control net and the limit points the file caches).
+using RhinoGeometry = std::variant<Unsupported, NurbsCurve, NurbsSurface, RhinoBrep, TriangleMesh, RhinoSubd>;
 
 // Reads the TCODE_OPENNURBS_CLASS chunk at the reader's offset and everything in it; on return the reader
 // is after it. Throws ArchiveError on a malformed chunk or class data.

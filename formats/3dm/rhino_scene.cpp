@@ -77,6 +77,8 @@ SceneNode object_node(const ObjectRecord& object, RhinoScene& out) {
           node.shapes.push_back({"", geometry, std::nullopt, "NurbsCurve"});
         } else if constexpr (std::is_same_v<T, TriangleMesh>) {
           node.shapes.push_back({"", geometry, std::nullopt, "Mesh"});
+        } else if constexpr (std::is_same_v<T, RhinoSubd>) {
+          out.subd_objects.push_back({node.source_entity, label, geometry.net, geometry.limit_points});
         }
         // Unsupported objects were reported by the file reader and carry nothing.
       },
@@ -103,7 +105,7 @@ RhinoScene scene_from_3dm(const Rhino3dmFile& file, const std::string& root_name
   for (const auto& object : file.objects) {
     if (std::holds_alternative<Unsupported>(object.geometry)) continue;
     SceneNode node = object_node(object, out);
-    if (node.shapes.empty()) continue;
+    if (node.shapes.empty() && !std::holds_alternative<RhinoSubd>(object.geometry)) continue;
     const int layer = object.attributes.layer_index;
     if (layer >= 0 && layer < static_cast<int>(layer_nodes.size()))
       layer_nodes[layer].children.push_back(std::move(node));
@@ -115,6 +117,11 @@ RhinoScene scene_from_3dm(const Rhino3dmFile& file, const std::string& root_name
 
   LengthUnit millimetres;
   scene = in_unit(std::move(scene), millimetres);
+  const double scale = file.unit.millimetres / millimetres.millimetres;  // as in_unit scales the scene
+  for (auto& subd : out.subd_objects) {
+    for (auto& p : subd.net.points) p *= scale;
+    for (auto& p : subd.stored_limit_points) p.position *= scale;
+  }
   return out;
 }
 

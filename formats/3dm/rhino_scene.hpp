@@ -6,6 +6,7 @@
 
 #include "core/scene.hpp"
 #include "formats/3dm/rhino_file.hpp"
+#include "formats/3dm/subd_object.hpp"
 
 namespace cadnurbs::rhino {
 
@@ -27,6 +28,17 @@ struct RhinoScene {
   // Scene-wide edges: TrimEdgeRef::edge < edge_count. Each Brep's edges are numbered after the previous
   // Brep's, so only faces of one Brep share an edge.
   int edge_count = 0;
+  // Every SubD object, in file order, in millimetres. Its scene node (the same source_entity) holds no
+  // shapes: the control net is turned into surfaces later.
+  struct SubdObject {
+    std::string source_entity;  // "object N", as its node's
+    std::string object_label;   // "object N" or "object N 'name'"
+    SubdControlNet net;
+    // Rhino's limit surface at some control points, as the file caches it (see RhinoSubd); what the
+    // surfaces made from `net` can be measured against. The file holds no render mesh of a SubD.
+    std::vector<SubdLimitPoint> stored_limit_points;
+  };
+  std::vector<SubdObject> subd_objects;
 };
 
 // Takes a parsed file and the name to use for the root node (the file's stem). Returns its scene:
@@ -34,7 +46,8 @@ struct RhinoScene {
 //    layer order; objects whose layer index is not in the table go to the root;
 //  - per object a node (name: the object's name, source_entity "object N" with N its 0-based index in the
 //    object table; colour: the object's own when its colour source is the object) holding its shapes:
-//    one per Brep face ("face K", 1-based), or the one curve, surface or mesh;
+//    one per Brep face ("face K", 1-based), or the one curve, surface or mesh; a SubD's node has none and
+//    its net goes to subd_objects;
 //  - lengths scaled from the file's unit to millimetres (in_unit), knots and trims untouched.
 // Each face's loops go through repair_trimming_loops. A face that the Brep reader could not build or that
 // repair refuses becomes Rhino's render mesh of it when the file stores one (meshed_faces), else it is
