@@ -7,6 +7,7 @@
 #include <opensubdiv/far/topologyDescriptor.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <utility>
 #include <vector>
@@ -58,9 +59,9 @@ struct SubdLimitSurface::Impl {
   std::unique_ptr<Far::TopologyRefiner> refiner;
   std::unique_ptr<Far::PatchTable> table;
   std::unique_ptr<Far::PatchMap> map;
-  std::vector<OsdPoint> points;  // every refined vertex, then the patch table's local points
-  std::vector<std::optional<std::array<Eigen::Vector3d, 16>>> regular;  // per patch
-  std::vector<std::array<PatchSide, 4>> sides;                          // per patch
+  std::vector<OsdPoint> points;                 // every refined vertex, then the patch table's local points
+  std::vector<std::vector<LimitPiece>> pieces;  // per patch
+  std::vector<std::array<PatchSide, 4>> sides;  // per patch
 };
 
 SubdLimitSurface::SubdLimitSurface(const SubdControlNet& net, const std::string& entity)
@@ -131,37 +132,37 @@ SubdLimitSurface::SubdLimitSurface(const SubdControlNet& net, const std::string&
     }
   }
 
-  // A patch is regular on its own when the table holds one regular B-spline patch over all of it.
-  std::vector<int> pieces(patches, 0);
-  impl_->regular.resize(patches);
+  impl_->pieces.resize(patches);
   const Far::PatchTable& table = *impl_->table;
   for (int array = 0; array < table.GetNumPatchArrays(); ++array) {
     const bool bspline = table.GetPatchArrayDescriptor(array).GetType() == Far::PatchDescriptor::REGULAR;
     for (int i = 0; i < table.GetNumPatches(array); ++i) {
       const Far::PatchParam param = table.GetPatchParam(array, i);
-      const int patch = param.GetFaceId();
-      ++pieces[patch];
-      if (!bspline || !param.IsRegular() || param.GetDepth() != param.NonQuadRoot()) continue;
-      const auto cvs = table.GetPatchVertices(array, i);
-      std::array<Eigen::Vector3d, 16> grid;
-      for (int k = 0; k < 16; ++k)
-        grid[k] = cvs[k] >= 0 ? points[cvs[k]].p : Eigen::Vector3d::Zero();  // phantoms: below
-      // Boundary bits, side k = 0..3 (v = 0, u = 1, v = 1, u = 0): the row beyond is the phantom 2 P1 - P2.
-      const int boundary = param.GetBoundary();
-      auto at = [&](int u, int v) -> Eigen::Vector3d& { return grid[u + 4 * v]; };
-      for (int t = 0; t < 4; ++t) {
-        if (boundary & 1) at(t, 0) = 2 * at(t, 1) - at(t, 2);
-        if (boundary & 4) at(t, 3) = 2 * at(t, 2) - at(t, 1);
+      LimitPiece piece;
+      piece.size = std::ldexp(1.0, -(param.GetDepth() - static_cast<int>(param.NonQuadRoot())));
+      piece.u0 = param.GetU() * piece.size;
+      piece.v0 = param.GetV() * piece.size;
+      if (bspline && param.IsRegular()) {
+        const auto cvs = table.GetPatchVertices(array, i);
+        std::array<Eigen::Vector3d, 16> grid;
+        for (int k = 0; k < 16; ++k)
+          grid[k] = cvs[k] >= 0 ? points[cvs[k]].p : Eigen::Vector3d::Zero();  // phantoms: below
+        // Boundary bits, side k = 0..3 (v = 0, u = 1, v = 1, u = 0): the row beyond is the phantom 2 P1 - P2.
+        const int boundary = param.GetBoundary();
+        auto at = [&](int u, int v) -> Eigen::Vector3d& { return grid[u + 4 * v]; };
+        for (int t = 0; t < 4; ++t) {
+          if (boundary & 1) at(t, 0) = 2 * at(t, 1) - at(t, 2);
+          if (boundary & 4) at(t, 3) = 2 * at(t, 2) - at(t, 1);
+        }
+        for (int t = 0; t < 4; ++t) {
+          if (boundary & 8) at(0, t) = 2 * at(1, t) - at(2, t);
+          if (boundary & 2) at(3, t) = 2 * at(2, t) - at(1, t);
+        }
+        piece.bspline = grid;
       }
-      for (int t = 0; t < 4; ++t) {
-        if (boundary & 8) at(0, t) = 2 * at(1, t) - at(2, t);
-        if (boundary & 2) at(3, t) = 2 * at(2, t) - at(1, t);
-      }
-      impl_->regular[patch] = grid;
+      impl_->pieces[param.GetFaceId()].push_back(piece);
     }
   }
-  for (int patch = 0; patch < patches; ++patch)
-    if (pieces[patch] != 1) impl_->regular[patch].reset();
 }
 
 SubdLimitSurface::~SubdLimitSurface() = default;
@@ -180,9 +181,7 @@ Eigen::Vector3d SubdLimitSurface::point(int patch, double u, double v) const {
   return sum;
 }
 
-std::optional<std::array<Eigen::Vector3d, 16>> SubdLimitSurface::regular_bspline_points(int patch) const {
-  return impl_->regular[patch];
-}
+const std::vector<LimitPiece>& SubdLimitSurface::pieces(int patch) const { return impl_->pieces[patch]; }
 
 PatchSide SubdLimitSurface::neighbour(int patch, int side) const { return impl_->sides[patch][side]; }
 

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "analysis/subd_nurbs/cubic_spline_fit.hpp"
+#include "analysis/subd_nurbs/patch_deviation.hpp"
 #include "analysis/subd_nurbs/subd_limit_surface.hpp"
 #include "core/geometry_error.hpp"
 #include "core/knot_insertion.hpp"
@@ -20,10 +21,6 @@ using subd_nurbs::SubdLimitSurface;
 using Row = std::vector<Eigen::Vector3d>;
 
 constexpr int kMaxLevel = 10;  // the smallest span 2^-10, OpenSubdiv's deepest isolation
-
-// Uniform cubic B-spline segment -> Bezier points: b = M p.
-constexpr double kBsplineToBezier[4][4] = {
-    {1.0 / 6, 4.0 / 6, 1.0 / 6, 0}, {0, 4.0 / 6, 2.0 / 6, 0}, {0, 2.0 / 6, 4.0 / 6, 0}, {0, 1.0 / 6, 4.0 / 6, 1.0 / 6}};
 
 // Corner c of a patch is where side c starts: (0,0), (1,0), (1,1), (0,1).
 constexpr double kCornerUv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -55,12 +52,8 @@ NurbsSurface bezier_of(const std::array<Eigen::Vector3d, 16>& bspline) {
   s.u_order = s.v_order = 4;
   s.u_count = s.v_count = 4;
   s.u_knots = s.v_knots = {0, 0, 0, 0, 1, 1, 1, 1};
-  s.points.assign(16, Eigen::Vector3d::Zero());
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i)
-      for (int b = 0; b < 4; ++b)
-        for (int a = 0; a < 4; ++a)
-          s.points[i + 4 * j] += kBsplineToBezier[i][a] * kBsplineToBezier[j][b] * bspline[a + 4 * b];
+  const auto points = subd_nurbs::bicubic_bezier_points(bspline);
+  s.points.assign(points.begin(), points.end());
   return s;
 }
 
@@ -94,13 +87,6 @@ Row refined_side(const Row& bezier, const std::vector<double>& knots) {
   row.front() = bezier.front();  // the corners stay the shared values, bit for bit
   row.back() = bezier.back();
   return row;
-}
-
-// The check's parameters: halfway between the fit's.
-std::vector<double> check_params(const std::vector<double>& fit) {
-  std::vector<double> t;
-  for (size_t k = 0; k + 1 < fit.size(); ++k) t.push_back(0.5 * (fit[k] + fit[k + 1]));
-  return t;
 }
 
 struct Sides {
@@ -167,8 +153,8 @@ SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_e
   // Exact patches, their corners the shared values.
   std::vector<std::optional<NurbsSurface>> exact(patches);
   for (int p = 0; p < patches; ++p)
-    if (const auto bspline = limit.regular_bspline_points(p)) {
-      exact[p] = bezier_of(*bspline);
+    if (const auto& pieces = limit.pieces(p); pieces.size() == 1 && pieces[0].bspline) {
+      exact[p] = bezier_of(*pieces[0].bspline);
       for (int c = 0; c < 4; ++c) exact[p]->points[side_index(c, 0, 4)] = corners[p][c];
     }
   // Sides between exact patches: the owner's row in both, bit for bit.
@@ -192,8 +178,8 @@ SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_e
     for (int e = 0; e < edges; ++e) {
       const auto [p, k] = sides.owner[e];
       const auto other = limit.neighbour(p, k);
-      const bool owner_exact = exact[p].has_value(), other_exact = other.patch < 0 || exact[other.patch];
-      if (owner_exact && other_exact) continue;
+      const bool owner_exact = exact[p].has_value(), other_exact = other.patch >= 0 && exact[other.patch];
+      if (owner_exact && (other_exact || other.patch < 0)) continue;  // no fitted patch on it
       if (owner_exact || other_exact) {
         const int q = owner_exact ? p : other.patch, side = owner_exact ? k : other.side;
         curves[e] = refined_side(side_row(*exact[q], side), knots);
@@ -207,8 +193,7 @@ SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_e
       }
       curves[e] = subd_nurbs::fit_cubic_curve(knots, params, samples, corners[p][k], corners[p][(k + 1) % 4]);
     }
-    double worst = 0;
-    const std::vector<double> checks = check_params(params);
+    subd_nurbs::PatchDeviation worst;
     for (int p = 0; p < patches; ++p) {
       if (exact[p]) continue;
       NurbsSurface& s = fitted[p] = fitted_surface(knots);
@@ -222,16 +207,19 @@ SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_e
       for (double v : params)
         for (double u : params) samples.push_back(limit.point(p, u, v));
       subd_nurbs::fit_cubic_surface_interior(knots, params, samples, s.points);
-      for (double v : checks)
-        for (double u : checks) worst = std::max(worst, (surface_point(s, u, v) - limit.point(p, u, v)).norm());
+      const subd_nurbs::PatchDeviation off = subd_nurbs::patch_deviation(s, limit, p);
+      worst.proven = std::max(worst.proven, off.proven);
+      worst.sampled = std::max(worst.sampled, off.sampled);
     }
-    if (worst <= deviation) {
+    if (std::max(worst.proven, worst.sampled) <= deviation) {
       result.fitted_levels = level;
-      result.fitted_deviation = worst;
+      result.fitted_bound = worst.proven;
+      result.fitted_sampled_at_features = worst.sampled;
       break;
     }
     if (level == kMaxLevel)
-      throw GeometryError(entity, "the patches around extraordinary points stay " + std::to_string(worst) +
+      throw GeometryError(entity, "the patches around extraordinary points stay " +
+                                      std::to_string(std::max(worst.proven, worst.sampled)) +
                                       " from the limit surface with spans down to 2^-" + std::to_string(level) +
                                       ", above the deviation " + std::to_string(deviation));
   }

@@ -22,8 +22,9 @@
 // more, geometric, inside each end span), the four boundary rows held: a side shared with an exact patch
 // is that patch's Bezier side with the knots inserted (the same curve to rounding), a side between fitted
 // patches is its own least-squares curve, copied bit for bit into both, ending at the limit positions.
-// k goes up from 1 until every fitted patch is within D of limit points sampled halfway between the fit's
-// samples (a sampled maximum, not a proven bound); at most k = 10 (OpenSubdiv's deepest isolation).
+// k goes up from 1 until every fitted patch is within D of the limit surface (patch_deviation.hpp: a bound
+// proven on every regular piece of the limit, Bezier coefficients of the difference; sampled only in the
+// squares of side 2^-10 at extraordinary features); at most k = 10 (OpenSubdiv's deepest isolation).
 // Where patches meet at a point its control point is one value, bit for bit: the limit position there.
 //
 // Refuses (GeometryError(entity, reason)): what SubdLimitSurface refuses (non-manifold edges, faces not
@@ -40,9 +41,11 @@ struct SubdNurbs {
   std::vector<TrimmedSurface> patches;
   int edges_used = 0;  // edge numbers first_edge_number .. first_edge_number + edges_used - 1
   int exact_patches = 0, fitted_patches = 0;
-  int fitted_levels = 0;             // k of the fitted patches' knots: 2k spans, the end ones 2^-k (0: none)
-  double fitted_deviation = 0;       // largest distance of a fitted patch from the limit points, sampled
-  bool deviation_is_sampled = true;  // fitted_deviation is a sampled maximum, not a proven bound
+  int fitted_levels = 0;  // k of the fitted patches' knots: 2k spans, the end ones 2^-k (0: none)
+  // Distance of the fitted patches from the limit surface at equal (u, v): proven (a bound) everywhere but
+  // the squares of side 2^-10 at extraordinary features, sampled (5 x 5 points each) in those.
+  double fitted_bound = 0;
+  double fitted_sampled_at_features = 0;
 };
 
 SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_edge_number,

@@ -8,7 +8,10 @@
 #include <map>
 #include <numbers>
 
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "analysis/subd_nurbs/subd_to_nurbs.hpp"
+#include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "core/geometry_error.hpp"
 
 namespace cadnurbs {
@@ -53,6 +56,32 @@ Vector3d limit_position(const SubdControlNet& net, int v) {
   return (n * n * net.points[v] + 4 * edges + opposite) / (n * (n + 5.0));
 }
 
+// An open 4 x 4 grid of quads over points (i, j, z), point i + 5 j, no tags.
+SubdControlNet open_grid_net() {
+  SubdControlNet net;
+  auto id = [](int i, int j) { return i + 5 * j; };
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) net.points.emplace_back(i, j, 0.1 * i * i - 0.05 * j * i + 0.02 * j * j * j);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) net.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return net;
+}
+
+// The uniform cubic B-spline segment of p0..p3 at t in [0, 1].
+Vector3d bspline_segment(const Vector3d& p0, const Vector3d& p1, const Vector3d& p2, const Vector3d& p3, double t) {
+  const double s = 1 - t;
+  return (s * s * s * p0 + (3 * t * t * t - 6 * t * t + 4) * p1 + (-3 * t * t * t + 3 * t * t + 3 * t + 1) * p2 +
+          t * t * t * p3) /
+         6;
+}
+
+// The point of side k (v = 0, u = 1, v = 1, u = 0) at t in [0, 1], counter-clockwise.
+Vector3d point_on_side(const NurbsSurface& s, int k, double t) {
+  static constexpr double kStart[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  static constexpr double kStep[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  return surface_point(s, kStart[k][0] + t * kStep[k][0], kStart[k][1] + t * kStep[k][1]);
+}
+
 Vector3d corner_point(const NurbsSurface& s, int corner) {
   static constexpr double kUv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   return surface_point(s, kUv[corner][0], kUv[corner][1]);
@@ -75,7 +104,7 @@ std::vector<Vector3d> side_points(const NurbsSurface& s, int k) {
 // Every edge number is used by exactly two sides, once reversed, and the two sides' control rows are the same points in
 // opposite order, bit for bit, when both patches have the same number of points along it. Returns how many shared sides
 // were compared bit for bit.
-int expect_closed_and_shared(const SubdNurbs& result, int first) {
+int expect_closed_and_shared(const SubdNurbs& result, int first, bool closed = true) {
   std::map<int, std::vector<std::pair<int, int>>> uses;  // edge -> (patch, side)
   for (size_t p = 0; p < result.patches.size(); ++p) {
     const auto& loop = result.patches[p].loops.at(0);
@@ -87,7 +116,7 @@ int expect_closed_and_shared(const SubdNurbs& result, int first) {
   EXPECT_EQ(uses.rbegin()->first, first + result.edges_used - 1);
   int bitwise = 0;
   for (const auto& [edge, sides] : uses) {
-    EXPECT_EQ(sides.size(), 2u) << "edge " << edge;
+    EXPECT_EQ(sides.size(), closed ? 2u : sides.size() == 1 ? 1u : 2u) << "edge " << edge;
     if (sides.size() != 2) continue;
     const auto& [p, k] = sides[0];
     const auto& [q, l] = sides[1];
@@ -95,11 +124,8 @@ int expect_closed_and_shared(const SubdNurbs& result, int first) {
     const auto& a = result.patches[p].surface;
     const auto& b = result.patches[q].surface;
     for (double t : {0.0, 0.1, 0.37, 0.5, 0.83, 1.0}) {
-      static constexpr double kStart[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-      static constexpr double kStep[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-      const Vector3d on_a = surface_point(a, kStart[k][0] + t * kStep[k][0], kStart[k][1] + t * kStep[k][1]);
-      const Vector3d on_b =
-          surface_point(b, kStart[l][0] + (1 - t) * kStep[l][0], kStart[l][1] + (1 - t) * kStep[l][1]);
+      const Vector3d on_a = point_on_side(a, k, t);
+      const Vector3d on_b = point_on_side(b, l, 1 - t);
       EXPECT_LT((on_a - on_b).norm(), 1e-13) << "edge " << edge << " t " << t;
     }
     if (a.u_count != b.u_count) continue;
@@ -229,13 +255,17 @@ TEST(SubdToNurbs, CubeFitsWithinTheDeviation) {
   EXPECT_EQ(result.exact_patches, 0);
   EXPECT_EQ(result.fitted_patches, 6);
   EXPECT_EQ(result.edges_used, 12);
-  EXPECT_LE(result.fitted_deviation, deviation);
+  EXPECT_LE(std::max(result.fitted_bound, result.fitted_sampled_at_features), deviation);
   for (size_t f = 0; f < net.faces.size(); ++f)
     for (int c = 0; c < 4; ++c)
       EXPECT_LT((corner_point(result.patches[f].surface, c) - limit_position(net, net.faces[f][c])).norm(), 1e-12);
   EXPECT_EQ(expect_closed_and_shared(result, 0), 12);
-  // Limit points of our own refinement, 5 steps deep (1024 per face), none of them a fit sample.
-  EXPECT_LE(distance_to_refined_limit(net, result, 5), deviation);
+  // Limit points of our own refinement, 5 steps deep (1024 per face), none of them in the squares of side
+  // 2^-10 where the bound is only sampled: within the bound, which is within D.
+  const double refined = distance_to_refined_limit(net, result, 5);
+  EXPECT_LE(refined, result.fitted_bound);
+  EXPECT_GT(refined, 0.1 * result.fitted_bound);  // and the bound is not far above what is there
+  EXPECT_LE(result.fitted_bound, deviation);
   // Normals point outward: from the centre of the cube through the middle of each patch.
   for (const auto& patch : result.patches)
     EXPECT_GT(surface_normal(patch.surface, 0.5, 0.5).dot(surface_point(patch.surface, 0.5, 0.5)), 0);
@@ -259,14 +289,8 @@ TEST(SubdToNurbs, CreaseIsTheCubicBsplineOfItsPoints) {
       auto crease = [&](int step) { return net.points[((a % 6) + (forward ? step : -step) + 12) % 6 + 6 * ring]; };
       const Vector3d p0 = crease(-1), p1 = crease(0), p2 = crease(1), p3 = crease(2);
       for (double t : {0.0, 0.25, 0.5, 0.9, 1.0}) {
-        const double s = 1 - t;
-        const Vector3d expected = (s * s * s * p0 + (3 * t * t * t - 6 * t * t + 4) * p1 +
-                                   (-3 * t * t * t + 3 * t * t + 3 * t + 1) * p2 + t * t * t * p3) /
-                                  6;
-        static constexpr double kStart[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        static constexpr double kStep[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-        const Vector3d got =
-            surface_point(result.patches[f].surface, kStart[k][0] + t * kStep[k][0], kStart[k][1] + t * kStep[k][1]);
+        const Vector3d expected = bspline_segment(p0, p1, p2, p3, t);
+        const Vector3d got = point_on_side(result.patches[f].surface, k, t);
         EXPECT_LT((got - expected).norm(), 1e-12) << "face " << f << " side " << k << " t " << t;
       }
     }
@@ -288,26 +312,22 @@ TEST(SubdToNurbs, FacesOfThreeAndFiveSidesFitWithinTheDeviation) {
   ASSERT_EQ(result.patches.size(), 20u);
   EXPECT_EQ(result.fitted_patches, 20);
   EXPECT_EQ(result.edges_used, 40);  // 5 + 15 sides of the net halved, and 5 + 15 from face centres
-  EXPECT_LE(result.fitted_deviation, deviation);
+  EXPECT_LE(std::max(result.fitted_bound, result.fitted_sampled_at_features), deviation);
   expect_closed_and_shared(result, 7);
   EXPECT_LE(distance_to_refined_limit(net, result, 4), deviation);
   const Vector3d inside(0.05, 0.1, 0.4);
   for (const auto& patch : result.patches)
     EXPECT_GT(surface_normal(patch.surface, 0.5, 0.5).dot(surface_point(patch.surface, 0.5, 0.5) - inside), 0);
-  std::cout << "pyramid: " << result.fitted_patches << " fitted patches, k = " << result.fitted_levels
-            << ", sampled deviation " << result.fitted_deviation << ", " << 1e3 * seconds / 20 << " ms a patch\n";
+  std::cout << "pyramid: " << result.fitted_patches << " fitted patches, k = " << result.fitted_levels << ", bound "
+            << result.fitted_bound << ", sampled at the features " << result.fitted_sampled_at_features << ", "
+            << 1e3 * seconds / 20 << " ms a patch\n";
 }
 
 // An open 4 x 4 grid, its four corners tagged: boundaries are creases, so every patch is regular, the boundary is the
 // cubic B-spline of the boundary points ending at the corners (phantom 2 P0 - P1).
 TEST(SubdToNurbs, OpenGridKeepsCornersAndBoundaryCurves) {
-  SubdControlNet net;
-  auto id = [](int i, int j) { return i + 5 * j; };
-  for (int j = 0; j < 5; ++j)
-    for (int i = 0; i < 5; ++i) net.points.emplace_back(i, j, 0.1 * i * i - 0.05 * j * i + 0.02 * j * j * j);
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) net.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-  net.corner_points = {id(0, 0), id(4, 0), id(4, 4), id(0, 4)};
+  SubdControlNet net = open_grid_net();
+  net.corner_points = {0, 4, 24, 20};
   const SubdNurbs result = subd_to_nurbs(net, 1e-3, 0);
   EXPECT_EQ(result.exact_patches, 16);
   EXPECT_EQ(result.edges_used, 40);
@@ -319,12 +339,39 @@ TEST(SubdToNurbs, OpenGridKeepsCornersAndBoundaryCurves) {
   row.push_back(2 * net.points[4] - net.points[3]);
   for (int i = 0; i < 4; ++i)
     for (double t : {0.0, 0.3, 0.5, 1.0}) {
-      const double s = 1 - t;
-      const Vector3d expected = (s * s * s * row[i] + (3 * t * t * t - 6 * t * t + 4) * row[i + 1] +
-                                 (-3 * t * t * t + 3 * t * t + 3 * t + 1) * row[i + 2] + t * t * t * row[i + 3]) /
-                                6;
+      const Vector3d expected = bspline_segment(row[i], row[i + 1], row[i + 2], row[i + 3], t);
       EXPECT_LT((surface_point(result.patches[i].surface, t, 0) - expected).norm(), 1e-12) << i << " " << t;
     }
+}
+
+// The project's certified tessellator meshes the cube's patches at D into one closed mesh: the shared edge
+// numbers and bit-identical sides leave no open edge after welding by exact position.
+TEST(SubdToNurbs, CubePatchesMeshWatertight) {
+  const SubdNurbs result = subd_to_nurbs(cube_net(), 1e-3, 0);
+  Scene scene;
+  for (const auto& patch : result.patches) scene.root.shapes.push_back({"patch", patch, std::nullopt});
+  TessellationReport report;
+  const Scene meshed = tessellate_to_deviation(scene, 1e-3, &report);
+  TriangleMesh all;
+  for (const auto& shape : meshed.root.shapes) append(all, std::get<TriangleMesh>(shape.geometry));
+  EXPECT_EQ(report.unshared_edge_uses, 0);
+  EXPECT_EQ(report.uncertified_triangles, 0);
+  const EdgeCounts open = count_boundary_edges(weld_exact(all));
+  EXPECT_EQ(open.boundary, 0);
+  EXPECT_EQ(open.non_manifold, 0);
+  EXPECT_GT(all.triangles.size(), 100u);
+}
+
+// The same grid with its corners not tagged: a boundary point of one face is smooth there (not a corner),
+// so the four corner patches are fitted, their boundary sides fitted curves used once.
+TEST(SubdToNurbs, OpenGridWithSmoothCornersFitsTheCornerPatches) {
+  SubdControlNet net = open_grid_net();
+  const double deviation = 1e-4;
+  const SubdNurbs result = subd_to_nurbs(net, deviation, 3);
+  EXPECT_EQ(result.exact_patches, 12);
+  EXPECT_EQ(result.fitted_patches, 4);
+  EXPECT_LE(std::max(result.fitted_bound, result.fitted_sampled_at_features), deviation);
+  EXPECT_EQ(expect_closed_and_shared(result, 3, false), 16);  // 24 shared sides, 8 of them fitted beside exact
 }
 
 TEST(SubdToNurbs, RefusesANonManifoldEdge) {
