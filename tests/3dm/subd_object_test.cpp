@@ -211,6 +211,41 @@ TEST_P(CorpusSubds, CachedLimitPointsAreCatmullClarksClosedForms) {
   EXPECT_GT(checked, crease_checked);
 }
 
+// Rhino's cached normals point to the side the faces turn counter-clockwise around: the side this reader
+// calls outside. At a smooth point the cached normal nearly agrees with the area-weighted normal of the
+// faces there; at a crease it is one sector's, so it is compared with the face there it agrees with best.
+// Were the faces read the wrong way round, both would be negative.
+TEST_P(CorpusSubds, CachedNormalsPointOutOfTheFaces) {
+  double smooth_least = 1, crease_least = 1;
+  for (const auto& corpus : subds_in(GetParam())) {
+    const SubdControlNet& net = corpus.subd.net;
+    std::vector<std::vector<Eigen::Vector3d>> face_areas(net.points.size());  // per point, its faces' area vectors
+    for (const auto& f : net.faces) {
+      Eigen::Vector3d area = Eigen::Vector3d::Zero();  // twice the area vector, by the shoelace rule
+      for (std::size_t k = 0; k < f.size(); ++k) area += net.points[f[k]].cross(net.points[f[(k + 1) % f.size()]]);
+      for (int p : f) face_areas[p].push_back(area);
+    }
+    std::vector<bool> on_crease(net.points.size(), false);
+    for (const auto& [a, b] : net.crease_edges) on_crease[a] = on_crease[b] = true;
+    for (const SubdLimitPoint& limit : corpus.subd.limit_points) {
+      const auto& areas = face_areas[limit.point];
+      if (on_crease[limit.point]) {
+        double best = -1;
+        for (const auto& a : areas) best = std::max(best, limit.normal.dot(a.normalized()));
+        crease_least = std::min(crease_least, best);
+      } else {
+        const Eigen::Vector3d sum =
+            std::accumulate(areas.begin(), areas.end(), Eigen::Vector3d(Eigen::Vector3d::Zero()));
+        smooth_least = std::min(smooth_least, limit.normal.dot(sum.normalized()));
+      }
+    }
+  }
+  std::cout << GetParam() << ": least cosine of a cached normal to its faces' mean normal " << smooth_least
+            << " (smooth points), to its nearest face normal " << crease_least << " (crease points)\n";
+  EXPECT_GT(smooth_least, 0.5);
+  EXPECT_GT(crease_least, 0.5);
+}
+
 INSTANTIATE_TEST_SUITE_P(SubdObject, CorpusSubds, ::testing::Values("v6_rhino_subd_logo.3dm", "v7_rhino_logo_subd.3dm"),
                          [](const auto& info) { return std::string(info.param).substr(0, 2); });
 
@@ -260,6 +295,43 @@ TEST(SubdObject, SceneListsTheNets) {
       EXPECT_EQ(listed.stored_limit_points.size(), subd->limit_points.size());
     }
   }
+}
+
+// A SubD in an inch file: its node sits under its layer with the object's name and no shapes; the net and
+// limit points come out in millimetres (x 25.4), the rest (faces, creases, corners, normals) as read.
+TEST(SubdObject, SceneScalesTheNetToMillimetres) {
+  RhinoSubd subd;
+  subd.net.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  subd.net.faces = {{0, 1, 2}};
+  subd.net.crease_edges = {{0, 1}};
+  subd.net.corner_points = {2};
+  subd.limit_points = {{1, {0.5, 0.25, 0}, {0, 0, 1}}};
+  Rhino3dmFile file;
+  file.unit = {"inch", 25.4};
+  file.layers = {{"Default", Colour{}}, {"Nets", Colour{0, 1, 0}}};
+  file.objects.push_back({0, "ON_SubD", subd, {"fin", 1, std::nullopt}});
+  const RhinoScene read = scene_from_3dm(file, "part");
+  EXPECT_TRUE(read.warnings.empty());
+  ASSERT_EQ(read.subd_objects.size(), 1u);
+  const auto& listed = read.subd_objects[0];
+  EXPECT_EQ(listed.source_entity, "object 0");
+  EXPECT_EQ(listed.object_label, "object 0 'fin'");
+  ASSERT_EQ(listed.net.points.size(), 3u);
+  for (std::size_t p = 0; p < 3; ++p) EXPECT_EQ(listed.net.points[p], subd.net.points[p] * 25.4);
+  EXPECT_EQ(listed.net.faces, subd.net.faces);
+  EXPECT_EQ(listed.net.crease_edges, subd.net.crease_edges);
+  EXPECT_EQ(listed.net.corner_points, subd.net.corner_points);
+  ASSERT_EQ(listed.stored_limit_points.size(), 1u);
+  EXPECT_EQ(listed.stored_limit_points[0].point, 1);
+  EXPECT_EQ(listed.stored_limit_points[0].position, Eigen::Vector3d(0.5, 0.25, 0) * 25.4);
+  EXPECT_EQ(listed.stored_limit_points[0].normal, Eigen::Vector3d(0, 0, 1));
+  ASSERT_EQ(read.scene.root.children.size(), 1u);
+  const SceneNode& layer = read.scene.root.children[0];
+  EXPECT_EQ(layer.name, "Nets");
+  ASSERT_EQ(layer.children.size(), 1u);
+  EXPECT_EQ(layer.children[0].name, "fin");
+  EXPECT_EQ(layer.children[0].source_entity, "object 0");
+  EXPECT_TRUE(layer.children[0].shapes.empty());
 }
 
 // A SubD's class data in the archive 70 layout, with the chunks' CRCs: points, faces as point loops
