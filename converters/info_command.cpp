@@ -73,8 +73,11 @@ int run_info(const std::vector<std::string>& args, const CommandContext& context
     total_area += area;
   });
   const auto box = scene_bounding_box(scene);
-  std::cout << "  bounding box (control points and vertices): " << box.min().transpose() << "  to  "
-            << box.max().transpose() << " " << scene.unit.name << "\n";
+  if (box.isEmpty())
+    std::cout << "  bounding box: none (no geometry)\n";
+  else
+    std::cout << "  bounding box (control points and vertices): " << box.min().transpose() << "  to  "
+              << box.max().transpose() << " " << scene.unit.name << "\n";
   std::cout << "  unit: " << scene.unit.name << " (source file: " << scene.source_unit.name << ")\n";
   std::cout << "  total area: " << std::setprecision(kAreaDigits) << total_area << " " << scene.unit.name << "^2\n";
   return 0;

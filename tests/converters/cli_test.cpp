@@ -97,6 +97,15 @@ TEST_F(Cli, NothingToWriteFailsNamingWhatTheInputHeld) {
     }
 }
 
+// info on a file without geometry says so instead of printing an inside-out box of +-1.8e308.
+TEST_F(Cli, InfoOnAFileWithoutGeometrySaysItHasNoBox) {
+  std::ofstream(path("view.wrl")) << "#VRML V2.0 utf8\nViewpoint { position 0 0 10 }\n";
+  const CommandResult r = run("info " + path("view.wrl"));
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("  bounding box: none (no geometry)\n"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("e+308"), std::string::npos) << r.out;
+}
+
 // door.x3dv (white_dune) trims by GLU's rule: a +-10 square about a 1 x 5 domain around a hole, and a
 // circle about a corner of the knob's domain. Both loops are cut to the domain, said once per face, and
 // the file converts to every output (it was refused: "leaves the surface's domain by 10 of its size").
