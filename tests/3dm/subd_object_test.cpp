@@ -342,6 +342,9 @@ struct HandSubd {
   std::vector<std::vector<int>> faces;
   std::set<Edge> creases;
   std::set<int> corners;
+  // What files may hold beyond the cube: every component's base with a group id (4 bytes), a symmetry
+  // link (5 bytes) and an anonymous chunk as additions, and a second level after level 0.
+  bool with_extras = false;
 
   static std::string crc_chunk(const std::string& own, const std::string& nested) {
     testing::ClassData c;
@@ -351,8 +354,16 @@ struct HandSubd {
         ::crc32(0, reinterpret_cast<const Bytef*>(own.data()), static_cast<uInt>(own.size()))));
     return c.body;
   }
-  static void base(testing::ClassData& d, std::uint32_t archive_id) {
-    d.put(archive_id).put(archive_id).put(std::uint16_t{0}).put(std::uint8_t{255});
+  void base(testing::ClassData& d, std::uint32_t archive_id) const {
+    d.put(archive_id).put(archive_id).put(std::uint16_t{0});
+    if (with_extras) {
+      d.put(std::uint8_t{0});                               // no displacement
+      d.put(std::uint8_t{4}).put(7u);                       // group id
+      d.put(std::uint8_t{5}).put(1u).put(std::uint8_t{0});  // symmetry link
+      d.put(std::uint8_t{254});
+      d.body += crc_chunk("future", "");
+    }
+    d.put(std::uint8_t{255});
   }
 
   std::string class_data() const {
@@ -397,10 +408,16 @@ struct HandSubd {
     }
     level.put(std::uint8_t{0});  // no cached mesh
     testing::ClassData subdimple;
-    subdimple.put(1).put(0).put(1u).put(nv).put(ne).put(nf).doubles({0, 0, 0, 1, 1, 1});
+    subdimple.put(1).put(0).put(with_extras ? 2u : 1u).put(nv).put(ne).put(nf).doubles({0, 0, 0, 1, 1, 1});
+    std::string levels = crc_chunk(level.body, "");
+    if (with_extras) {
+      std::string finer = level.body;
+      finer[8] = 1;  // its level index
+      levels += crc_chunk(finer, "");
+    }
     testing::ClassData data;
     data.put(std::uint8_t{1});
-    data.body += crc_chunk(subdimple.body, crc_chunk(level.body, ""));
+    data.body += crc_chunk(subdimple.body, levels);
     return data.body;
   }
 };
@@ -434,6 +451,21 @@ TEST(SubdObject, HandBuiltCubeReadsBack) {
   EXPECT_EQ(read.net.corner_points, std::vector<int>{1});
   EXPECT_TRUE(read.limit_points.empty());
   EXPECT_DOUBLE_EQ(signed_volume(read.net), 1.0);
+}
+
+// Additions a reader does not know and a finer level are stepped over: the same net comes back.
+TEST(SubdObject, AdditionsAndFinerLevelsAreSteppedOver) {
+  HandSubd cube = unit_cube();
+  cube.with_extras = true;
+  const std::string bytes = testing::ClassData{cube.class_data()}.chunk();
+  ArchiveReader reader(bytes, "hand.3dm", 70);
+  reader.begin_chunk();
+  const RhinoSubd read = read_subd(reader);
+  EXPECT_EQ(reader.bytes_left(), 0u);
+  EXPECT_EQ(read.net.points, cube.points);
+  EXPECT_EQ(read.net.faces, cube.faces);
+  EXPECT_EQ(read.net.crease_edges.size(), 2u);
+  EXPECT_EQ(read.net.corner_points, std::vector<int>{1});
 }
 
 // Offsets in the messages: the class chunk's 12-byte header, the present byte at 12, the SubD chunk at 13
