@@ -3,6 +3,8 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/geometry_error.hpp"
 #include "formats/3dm/typecodes.hpp"
@@ -18,13 +20,9 @@ constexpr int kLimitPointMark = 4;  // the flag byte before a vertex's cached li
 constexpr std::uint8_t kAdditionsEnd = 255;
 constexpr std::uint8_t kAdditionChunk = 254;
 
-// ON_SubDVertexTag by value: Unset, Smooth, Crease, Corner, Dart. Only a corner is said in the net.
-struct VertexTag {
-  const char* name;
-  bool corner;
-};
-constexpr std::array kVertexTags = {VertexTag{"Unset", false}, VertexTag{"Smooth", false}, VertexTag{"Crease", false},
-                                    VertexTag{"Corner", true}, VertexTag{"Dart", false}};
+// Per ON_SubDVertexTag value (Unset, Smooth, Crease, Corner, Dart): whether it is a corner, the one tag
+// the net says; the others follow from the crease edges.
+constexpr std::array kVertexTagIsCorner = {false, false, false, true, false};
 
 // ON_SubDEdgeTag by value: Unset, Smooth, Crease, (3 unused), SmoothX (smooth, subdivided at its middle).
 struct EdgeTag {
@@ -99,8 +97,8 @@ void read_vertex(ArchiveReader& reader, const IdRange& vertices, int index, Rhin
   const std::string who = "vertex " + std::to_string(index);
   read_component_base(reader, who, vertices.begin + static_cast<std::uint32_t>(index));
   const std::uint8_t tag = reader.u8();
-  if (tag >= kVertexTags.size()) refuse(reader, who + " has unknown tag " + std::to_string(tag));
-  if (kVertexTags[tag].corner) out.net.corner_points.push_back(index);
+  if (tag >= kVertexTagIsCorner.size()) refuse(reader, who + " has unknown tag " + std::to_string(tag));
+  if (kVertexTagIsCorner[tag]) out.net.corner_points.push_back(index);
   out.net.points.push_back(reader.point3());
   reader.u16();  // edge count, said again by the edge list
   const std::uint16_t face_count = reader.u16();
