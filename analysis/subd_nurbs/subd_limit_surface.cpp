@@ -53,22 +53,11 @@ void check_manifold(const SubdControlNet& net, const std::string& entity) {
   });
 }
 
-}  // namespace
+using Refiner = std::unique_ptr<Far::TopologyRefiner>;
 
-struct SubdLimitSurface::Impl {
-  std::unique_ptr<Far::TopologyRefiner> refiner;
-  std::unique_ptr<Far::PatchTable> table;
-  std::unique_ptr<Far::PatchMap> map;
-  std::vector<OsdPoint> points;                 // every refined vertex, then the patch table's local points
-  std::vector<std::vector<LimitPiece>> pieces;  // per patch
-  std::vector<std::array<PatchSide, 4>> sides;  // per patch
-};
-
-SubdLimitSurface::SubdLimitSurface(const SubdControlNet& net, const std::string& entity)
-    : impl_(std::make_unique<Impl>()) {
-  validate(net, entity);
-  check_manifold(net, entity);
-
+// OpenSubdiv's refiner of the net under our rules: crease edges infinitely sharp, corners kept, the
+// boundary a crease.
+Refiner make_refiner(const SubdControlNet& net, const std::string& entity) {
   std::vector<int> sizes, indices, crease_pairs, corners(net.corner_points);
   for (const auto& face : net.faces) {
     sizes.push_back(static_cast<int>(face.size()));
@@ -88,13 +77,61 @@ SubdLimitSurface::SubdLimitSurface(const SubdControlNet& net, const std::string&
   descriptor.numCorners = static_cast<int>(corners.size());
   descriptor.cornerVertexIndices = corners.data();
   descriptor.cornerWeights = corner_sharpness.data();
-
   Sdc::Options rules;
-  rules.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);  // boundary = crease; corners as
-                                                                            // tagged
+  rules.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);  // corners only where tagged
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  impl_->refiner.reset(Factory::Create(descriptor, Factory::Options(Sdc::SCHEME_CATMARK, rules)));
-  if (!impl_->refiner) throw GeometryError(entity, "OpenSubdiv refuses the net's topology");
+  Refiner refiner(Factory::Create(descriptor, Factory::Options(Sdc::SCHEME_CATMARK, rules)));
+  if (!refiner) throw GeometryError(entity, "OpenSubdiv refuses the net's topology");
+  return refiner;
+}
+
+// The net after one Catmull-Clark step (all quads; face f's children in order, child k at its point k),
+// its sharp edges and corners carried over: where the net has faces other than quads, a quad side would
+// otherwise face two half sides of the other face's corner patches.
+SubdControlNet one_step(const SubdControlNet& net, const std::string& entity) {
+  Refiner refiner = make_refiner(net, entity);
+  Far::TopologyRefiner::UniformOptions step(1);
+  step.fullTopologyInLastLevel = true;  // its edges and their sharpness
+  refiner->RefineUniform(step);
+  const Far::TopologyLevel& level = refiner->GetLevel(1);
+  std::vector<OsdPoint> points(refiner->GetNumVerticesTotal());
+  for (size_t i = 0; i < net.points.size(); ++i) points[i].p = net.points[i];
+  OsdPoint* children = points.data() + net.points.size();
+  Far::PrimvarRefinerReal<double>(*refiner).Interpolate(1, points.data(), children);
+  SubdControlNet refined;
+  for (int v = 0; v < level.GetNumVertices(); ++v) {
+    refined.points.push_back(points[net.points.size() + v].p);
+    if (Sdc::Crease::IsInfinite(level.GetVertexSharpness(v))) refined.corner_points.push_back(v);
+  }
+  for (int f = 0; f < level.GetNumFaces(); ++f) {
+    const auto corners = level.GetFaceVertices(f);
+    refined.faces.emplace_back(corners.begin(), corners.end());
+  }
+  for (int e = 0; e < level.GetNumEdges(); ++e)
+    if (Sdc::Crease::IsInfinite(level.GetEdgeSharpness(e)))
+      refined.crease_edges.push_back({level.GetEdgeVertices(e)[0], level.GetEdgeVertices(e)[1]});
+  return refined;
+}
+
+}  // namespace
+
+struct SubdLimitSurface::Impl {
+  std::unique_ptr<Far::TopologyRefiner> refiner;
+  std::unique_ptr<Far::PatchTable> table;
+  std::unique_ptr<Far::PatchMap> map;
+  std::vector<OsdPoint> points;                 // every refined vertex, then the patch table's local points
+  std::vector<std::vector<LimitPiece>> pieces;  // per patch
+  std::vector<std::array<PatchSide, 4>> sides;  // per patch
+};
+
+SubdLimitSurface::SubdLimitSurface(const SubdControlNet& given, const std::string& entity)
+    : impl_(std::make_unique<Impl>()) {
+  validate(given, entity);
+  check_manifold(given, entity);
+  const bool all_quads =
+      std::all_of(given.faces.begin(), given.faces.end(), [](const auto& face) { return face.size() == 4; });
+  const SubdControlNet net = all_quads ? given : one_step(given, entity);
+  impl_->refiner = make_refiner(net, entity);
 
   Far::PatchTableFactory::Options options(kIsolationLevel);
   options.useInfSharpPatch = true;                   // creases like boundaries: regular patches beside them

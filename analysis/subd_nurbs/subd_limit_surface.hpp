@@ -2,8 +2,9 @@
 // The Catmull-Clark limit surface of a SubdControlNet, patch by patch, through OpenSubdiv 3.5 (Far): what
 // subd_to_nurbs fits, copies and measures against (internal to analysis/subd_nurbs).
 //
-// Patches: one per quad of the net and one per corner of every other face (the quads one Catmull-Clark
-// step makes of it), OpenSubdiv's ptex faces, each over (u, v) in [0, 1]^2. A quad's (0, 0) is its first
+// Patches: one per quad of the net, or, when the net has faces other than quads, one per quad of the net
+// after one Catmull-Clark step (made by OpenSubdiv, sharp edges and corners carried over; face f's
+// children in order); OpenSubdiv's ptex faces, each over (u, v) in [0, 1]^2. A quad's (0, 0) is its first
 // point, u runs toward its second and v toward its last, so Su x Sv points where the face does (outward).
 // Sides k = 0..3 run counter-clockwise: v = 0, u = 1, v = 1, u = 0.
 //
