@@ -139,6 +139,23 @@ int expect_closed_and_shared(const SubdNurbs& result, int first, bool closed = t
   return bitwise;
 }
 
+// The patches meshed by the project's certified tessellator at D, welded by exact position: checks that the
+// mesh is closed and manifold (the patches of a closed net) and every triangle certified.
+TriangleMesh expect_watertight_mesh(const SubdNurbs& result, double deviation) {
+  Scene scene;
+  for (const auto& patch : result.patches) scene.root.shapes.push_back({"patch", patch, std::nullopt});
+  TessellationReport report;
+  const Scene meshed = tessellate_to_deviation(scene, deviation, &report);
+  TriangleMesh all;
+  for (const auto& shape : meshed.root.shapes) append(all, std::get<TriangleMesh>(shape.geometry));
+  EXPECT_EQ(report.unshared_edge_uses, 0);
+  EXPECT_EQ(report.uncertified_triangles, 0);
+  const EdgeCounts open = count_boundary_edges(weld_exact(all));
+  EXPECT_EQ(open.boundary, 0);
+  EXPECT_EQ(open.non_manifold, 0);
+  return all;
+}
+
 // One uniform Catmull-Clark step of a closed net without creases (faces of any size; all quads after it).
 // Child k of quad (a, b, c, d) keeps its parent's orientation: it starts at the child of its k-th point when
 // k = 0, and where the parent's (u, v) is least otherwise, so after L steps face f's child (i, j) covers
@@ -345,19 +362,8 @@ TEST(SubdToNurbs, OpenGridKeepsCornersAndBoundaryCurves) {
 // The project's certified tessellator meshes the cube's patches at D into one closed mesh: the shared edge
 // numbers and bit-identical sides leave no open edge after welding by exact position.
 TEST(SubdToNurbs, CubePatchesMeshWatertight) {
-  const SubdNurbs result = subd_to_nurbs(cube_net(), 1e-3, 0);
-  Scene scene;
-  for (const auto& patch : result.patches) scene.root.shapes.push_back({"patch", patch, std::nullopt});
-  TessellationReport report;
-  const Scene meshed = tessellate_to_deviation(scene, 1e-3, &report);
-  TriangleMesh all;
-  for (const auto& shape : meshed.root.shapes) append(all, std::get<TriangleMesh>(shape.geometry));
-  EXPECT_EQ(report.unshared_edge_uses, 0);
-  EXPECT_EQ(report.uncertified_triangles, 0);
-  const EdgeCounts open = count_boundary_edges(weld_exact(all));
-  EXPECT_EQ(open.boundary, 0);
-  EXPECT_EQ(open.non_manifold, 0);
-  EXPECT_GT(all.triangles.size(), 100u);
+  const TriangleMesh mesh = expect_watertight_mesh(subd_to_nurbs(cube_net(), 1e-3, 0), 1e-3);
+  EXPECT_GT(mesh.triangles.size(), 100u);
 }
 
 // The same grid with its corners not tagged: a boundary point of one face is smooth there (not a corner),
@@ -373,7 +379,8 @@ TEST(SubdToNurbs, OpenGridWithSmoothCornersFitsTheCornerPatches) {
 }
 
 // Rhino's own SubDs (the logo, read by formats/3dm): every patch corner at a control point is where Rhino's
-// cached limit point says, the patches close up, and the fitted ones are within D.
+// cached limit point says (where Rhino's rules are Catmull-Clark's), the patches close up and mesh
+// watertight, and the fitted ones are within D.
 TEST(SubdToNurbs, RhinoLogoMatchesRhinosLimitPoints) {
   const rhino::RhinoScene scene = rhino::read_3dm(CADNURBS_SHARED_DIR "/corpus/3dm/v7_rhino_logo_subd.3dm");
   ASSERT_EQ(scene.subd_objects.size(), 6u);
@@ -390,6 +397,7 @@ TEST(SubdToNurbs, RhinoLogoMatchesRhinosLimitPoints) {
     fitted += result.fitted_patches;
     EXPECT_LE(std::max(result.fitted_bound, result.fitted_sampled_at_features), deviation);
     expect_closed_and_shared(result, 0);
+    expect_watertight_mesh(result, deviation);
     // A net of quads: a patch per quad, its corner k at point k. Otherwise a patch per quad of the net
     // after one step: face f's children in order, child k at the face's point k, its corner k for a quad
     // (the child keeps the quad's orientation), its corner 0 for another face.
