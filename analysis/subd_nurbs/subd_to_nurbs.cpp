@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <numeric>
 #include <optional>
 
@@ -76,16 +77,18 @@ void set_side_row(NurbsSurface& s, int side, const Row& row) {
   for (int k = 0; k < s.u_count; ++k) s.points[side_index(side, k, s.u_count)] = row[k];
 }
 
-// A Bezier side (4 points) as the same cubic on `knots`.
-Row refined_side(const Row& bezier, const std::vector<double>& knots) {
+// A side curve (cubic) on knots `from` as the same curve on knots `to`, which hold every knot of `from`.
+Row reknotted(const Row& points, const std::vector<double>& from, const std::vector<double>& to) {
+  std::vector<double> extra;
+  std::set_difference(to.begin() + 4, to.end() - 4, from.begin() + 4, from.end() - 4, std::back_inserter(extra));
+  if (extra.empty()) return points;
   NurbsCurve curve;
   curve.order = 4;
-  curve.knots = {0, 0, 0, 0, 1, 1, 1, 1};
-  curve.points = bezier;
-  const NurbsCurve refined = refine_knots(curve, std::vector<double>(knots.begin() + 4, knots.end() - 4));
-  Row row = refined.points;
-  row.front() = bezier.front();  // the corners stay the shared values, bit for bit
-  row.back() = bezier.back();
+  curve.knots = from;
+  curve.points = points;
+  Row row = refine_knots(curve, extra).points;
+  row.front() = points.front();  // the corners stay the shared values, bit for bit
+  row.back() = points.back();
   return row;
 }
 
@@ -167,38 +170,59 @@ SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_e
     set_side_row(*exact[other.patch], other.side, row);
   }
 
+  // Levels: each fitted patch wants its own k, raised while it is not within D. A side between fitted patches
+  // is fitted at the larger k of the two; a patch's knots are those of the largest k among itself and its
+  // fitted neighbours, so every side it holds lies in its space (graded knots nest) and goes in by knot
+  // insertion where its k is lower (the same curve to rounding; bit for bit where the k are equal).
   SubdNurbs result;
   std::vector<NurbsSurface> fitted(patches);
-  const bool any_fitted = std::any_of(exact.begin(), exact.end(), [](const auto& s) { return !s; });
-  for (int level = 1; any_fitted; ++level) {
-    const std::vector<double> knots = subd_nurbs::graded_cubic_knots(level);
-    const std::vector<double> params = subd_nurbs::sample_params(knots, 4, 6);
-    // Side curves of fitted patches, in their owner's direction.
+  std::vector<int> wanted(patches, 1), level_of(patches, 0);
+  auto fitted_neighbour = [&](int p, int k) {
+    const int q = limit.neighbour(p, k).patch;
+    return q >= 0 && !exact[q] ? q : -1;
+  };
+  while (std::any_of(exact.begin(), exact.end(), [](const auto& s) { return !s; })) {
+    for (int p = 0; p < patches; ++p) {
+      level_of[p] = wanted[p];
+      for (int k = 0; k < 4; ++k)
+        if (const int q = fitted_neighbour(p, k); q >= 0) level_of[p] = std::max(level_of[p], wanted[q]);
+    }
+    // Side curves of fitted patches, in their owner's direction, with their level (0: an exact patch's
+    // Bezier side).
     std::vector<Row> curves(edges);
+    std::vector<int> curve_level(edges, 0);
     for (int e = 0; e < edges; ++e) {
       const auto [p, k] = sides.owner[e];
       const auto other = limit.neighbour(p, k);
       const bool owner_exact = exact[p].has_value(), other_exact = other.patch >= 0 && exact[other.patch];
       if (owner_exact && (other_exact || other.patch < 0)) continue;  // no fitted patch on it
       if (owner_exact || other_exact) {
-        const int q = owner_exact ? p : other.patch, side = owner_exact ? k : other.side;
-        curves[e] = refined_side(side_row(*exact[q], side), knots);
+        curves[e] = owner_exact ? side_row(*exact[p], k) : side_row(*exact[other.patch], other.side);
         if (!owner_exact) std::reverse(curves[e].begin(), curves[e].end());
         continue;
       }
+      const int level = other.patch >= 0 ? std::max(wanted[p], wanted[other.patch]) : wanted[p];
+      const std::vector<double> knots = subd_nurbs::graded_cubic_knots(level);
+      const std::vector<double> params = subd_nurbs::sample_params(knots, 4, 6);
       Row samples;
       for (double t : params) {
         const Eigen::Vector2d uv = side_uv(k, t);
         samples.push_back(limit.point(p, uv.x(), uv.y()));
       }
       curves[e] = subd_nurbs::fit_cubic_curve(knots, params, samples, corners[p][k], corners[p][(k + 1) % 4]);
+      curve_level[e] = level;
     }
-    subd_nurbs::PatchDeviation worst;
+    bool all_within = true;
     for (int p = 0; p < patches; ++p) {
       if (exact[p]) continue;
+      const std::vector<double> knots = subd_nurbs::graded_cubic_knots(level_of[p]);
+      const std::vector<double> params = subd_nurbs::sample_params(knots, 4, 6);
       NurbsSurface& s = fitted[p] = fitted_surface(knots);
       for (int k = 0; k < 4; ++k) {
-        Row row = curves[sides.number[p][k]];
+        const int e = sides.number[p][k];
+        const std::vector<double> bezier = {0, 0, 0, 0, 1, 1, 1, 1};
+        Row row =
+            reknotted(curves[e], curve_level[e] == 0 ? bezier : subd_nurbs::graded_cubic_knots(curve_level[e]), knots);
         if (sides.reversed[p][k]) std::reverse(row.begin(), row.end());
         set_side_row(s, k, row);
       }
@@ -208,20 +232,21 @@ SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_e
         for (double u : params) samples.push_back(limit.point(p, u, v));
       subd_nurbs::fit_cubic_surface_interior(knots, params, samples, s.points);
       const subd_nurbs::PatchDeviation off = subd_nurbs::patch_deviation(s, limit, p);
-      worst.proven = std::max(worst.proven, off.proven);
-      worst.sampled = std::max(worst.sampled, off.sampled);
+      result.fitted_bound = std::max(result.fitted_bound, off.proven);
+      result.fitted_sampled_at_features = std::max(result.fitted_sampled_at_features, off.sampled);
+      result.fitted_levels = std::max(result.fitted_levels, level_of[p]);
+      if (std::max(off.proven, off.sampled) <= deviation) continue;
+      all_within = false;
+      if (wanted[p] == kMaxLevel)
+        throw GeometryError(entity, "patch " + std::to_string(p) + " stays " +
+                                        std::to_string(std::max(off.proven, off.sampled)) +
+                                        " from the limit surface with spans down to 2^-" + std::to_string(kMaxLevel) +
+                                        ", above the deviation " + std::to_string(deviation));
+      ++wanted[p];
     }
-    if (std::max(worst.proven, worst.sampled) <= deviation) {
-      result.fitted_levels = level;
-      result.fitted_bound = worst.proven;
-      result.fitted_sampled_at_features = worst.sampled;
-      break;
-    }
-    if (level == kMaxLevel)
-      throw GeometryError(entity, "the patches around extraordinary points stay " +
-                                      std::to_string(std::max(worst.proven, worst.sampled)) +
-                                      " from the limit surface with spans down to 2^-" + std::to_string(level) +
-                                      ", above the deviation " + std::to_string(deviation));
+    if (all_within) break;
+    result.fitted_bound = result.fitted_sampled_at_features = 0;
+    result.fitted_levels = 0;
   }
 
   for (int p = 0; p < patches; ++p) {

@@ -17,15 +17,16 @@
 // patch of its 4 x 4 points (phantom rows 2 P1 - P2 beyond boundaries and creases), written as its Bezier patch (orders
 // 4, knots 0 0 0 0 1 1 1 1): exact to rounding. Fitted patches (every patch that holds an extraordinary point, a dart,
 // a crease end...): clamped bicubic B-splines on knots graded toward both ends, 2^-k, ..., 1/4, 1/2, 3/4, ..., 1 - 2^-k
-// (2k spans each way, the same k for all); on these knots the limit surface is exactly bicubic everywhere but the
-// corner spans at the extraordinary points. Least squares to limit points sampled on a grid (5 per span and 6 more,
-// geometric, inside each end span), the four boundary rows held: a side shared with an exact patch is that patch's
-// Bezier side with the knots inserted (the same curve to rounding), a side between fitted patches is its own
-// least-squares curve, copied bit for bit into both, ending at the limit positions. k goes up from 1 until every fitted
-// patch is within D of the limit surface (patch_deviation.hpp: a bound proven on every regular piece of the limit,
-// Bezier coefficients of the difference; sampled only in the squares of side 2^-10 at extraordinary features); at most
-// k = 10 (OpenSubdiv's deepest isolation). Where patches meet at a point its control point is one value, bit for bit:
-// the limit position there.
+// (2k spans each way); on these knots the limit surface is exactly bicubic everywhere but the corner spans at the
+// extraordinary points. Least squares to limit points sampled on a grid (5 per span and 6 more, geometric, inside each
+// end span), the four boundary rows held: a side shared with an exact patch is that patch's Bezier side with the knots
+// inserted (the same curve to rounding); a side between fitted patches is its own least-squares curve at the larger k
+// of the two, ending at the limit positions, in both patches bit for bit where their k are equal, else by knot
+// insertion (the same curve to rounding). Each fitted patch's k starts at 1 and goes up while the patch is not within D
+// of the limit surface (patch_deviation.hpp: a bound proven on every regular piece of the limit, Bezier coefficients
+// of the difference; sampled only in the squares of side 2^-10 at extraordinary features), at most 10 (OpenSubdiv's
+// deepest isolation); a patch's knots are those of the largest k among itself and its fitted neighbours. Where patches
+// meet at a point its control point is one value, bit for bit: the limit position there.
 //
 // Rules: Catmull-Clark as OpenSubdiv applies it (subd_limit_surface.hpp). Rhino's own SubD differs near
 // crease points (openNURBS weighs the smooth edges there by a sector coefficient) and around faces other
@@ -34,7 +35,7 @@
 // and on faces of 3 and 5 sides.
 //
 // Refuses (GeometryError(entity, reason)): what SubdLimitSurface refuses (non-manifold edges, faces not consistently
-// oriented, invalid nets), D <= 0, and a fit that stays above D at k = 10.
+// oriented, invalid nets), D <= 0, and a patch that stays above D at k = 10.
 #include <string>
 #include <vector>
 
@@ -47,7 +48,7 @@ struct SubdNurbs {
   std::vector<TrimmedSurface> patches;
   int edges_used = 0;  // edge numbers first_edge_number .. first_edge_number + edges_used - 1
   int exact_patches = 0, fitted_patches = 0;
-  int fitted_levels = 0;  // k of the fitted patches' knots: 2k spans, the end ones 2^-k (0: none)
+  int fitted_levels = 0;  // the largest k of the fitted patches' knots: 2k spans, the end ones 2^-k (0: none)
   // Distance of the fitted patches from the limit surface at equal (u, v), hence also a bound on the distance between
   // the two surfaces either way: proven everywhere but the squares of side 2^-10 at extraordinary features, sampled (5
   // x 5 points each) in those. Exact patches: 0 to rounding.
