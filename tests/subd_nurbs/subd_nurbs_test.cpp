@@ -1,5 +1,6 @@
-// subd_to_nurbs against closed forms: Catmull-Clark limit-position masks, the cubic B-spline of a crease, and limit
-// points of our own uniform Catmull-Clark refinement (written here, independent of OpenSubdiv).
+// subd_to_nurbs against closed forms (Catmull-Clark limit-position masks, the cubic B-spline of a crease or boundary),
+// limit points of our own uniform Catmull-Clark refinement (written here, independent of OpenSubdiv), Rhino's own
+// cached limit points (corpus logo), and the project's certified tessellator (closed meshes).
 #include <gtest/gtest.h>
 
 #include <chrono>
