@@ -5,28 +5,17 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
+#include "class_chunks.hpp"
 
 namespace cadnurbs::rhino {
 namespace {
 
-struct Bytes {
-  std::string data;
-  template <class T>
-  Bytes& put(T value) {
-    data.append(reinterpret_cast<const char*>(&value), sizeof value);
-    return *this;
-  }
-  Bytes& doubles(std::initializer_list<double> values) {
-    for (double v : values) put(v);
-    return *this;
-  }
-};
+using testing::ClassData;  // little-endian bytes built by hand
 
 // A rational quadratic 2D spline with 4 points, both ends clamped: the stored knots 0, 1, 2 stand for
 // openNURBS's 0 0 1 2 2.
-Bytes clamped_rational_spline() {
-  Bytes b;
+ClassData clamped_rational_spline() {
+  ClassData b;
   b.put<std::int8_t>(2).put<std::int8_t>(1).put<std::int8_t>(3).put<std::uint16_t>(4);
   b.put<std::uint8_t>(0).put<std::uint8_t>(0);
   b.doubles({0, 0, 3, 2});                              // bounding box
@@ -37,7 +26,7 @@ Bytes clamped_rational_spline() {
 }
 
 TEST(LegacyNurbs, ClampedEndsStoreTheirKnotOnceAndRationalPointsAreEuclidean) {
-  const std::string bytes = clamped_rational_spline().data;
+  const std::string bytes = clamped_rational_spline().body;
   ArchiveReader reader(bytes, "spl", 1);
   const NurbsCurve c = read_legacy_spline(reader);
   EXPECT_EQ(reader.offset(), bytes.size());
@@ -51,9 +40,9 @@ TEST(LegacyNurbs, ClampedEndsStoreTheirKnotOnceAndRationalPointsAreEuclidean) {
 }
 
 TEST(LegacyNurbs, AnOrderBelowTwoIsRefusedNamingTheRecordAndOffset) {
-  Bytes b;
+  ClassData b;
   b.put<std::int8_t>(3).put<std::int8_t>(0).put<std::int8_t>(1).put<std::uint16_t>(4);
-  ArchiveReader reader(b.data, "spl", 1);
+  ArchiveReader reader(b.body, "spl", 1);
   try {
     read_legacy_spline(reader);
     FAIL() << "no error";
@@ -63,7 +52,7 @@ TEST(LegacyNurbs, AnOrderBelowTwoIsRefusedNamingTheRecordAndOffset) {
 }
 
 TEST(LegacyNurbs, SurfacePointsRunVFastestInTheFileAndUFastestInCore) {
-  Bytes b;
+  ClassData b;
   b.put<std::int8_t>(3).put<std::uint8_t>(0).put<std::int8_t>(1).put<std::int8_t>(1);  // degrees 1, 1
   b.put<std::uint16_t>(2).put<std::uint16_t>(1);  // u: 2 spans (3 points), v: 1 span (2 points)
   b.put<std::int8_t>(0).put<std::int8_t>(0);      // not rational
@@ -73,9 +62,9 @@ TEST(LegacyNurbs, SurfacePointsRunVFastestInTheFileAndUFastestInCore) {
   b.doubles({0, 1});                              // v knots
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 2; ++j) b.doubles({double(i), double(j), double(10 * i + j)});
-  ArchiveReader reader(b.data, "srf", 1);
+  ArchiveReader reader(b.body, "srf", 1);
   const NurbsSurface s = read_legacy_surface(reader);
-  EXPECT_EQ(reader.offset(), b.data.size());
+  EXPECT_EQ(reader.offset(), b.body.size());
   ASSERT_EQ(s.u_count, 3);
   ASSERT_EQ(s.v_count, 2);
   EXPECT_EQ(s.u_knots, (std::vector<double>{0, 0, 1, 2, 2}));
