@@ -17,6 +17,8 @@ namespace cadnurbs {
 
 namespace {
 
+constexpr double kSubdShareOfDeviation = 0.1;
+
 // The share of D a quantising format's mesh is tessellated to (the rest is the quantisation's).
 constexpr double kTessellationShare = 0.7;
 
@@ -100,7 +102,12 @@ ConversionResult write_scene_graph(const ConversionRequest& request, const Scene
 LoadedInput load_input(const ConversionRequest& request) {
   const FileFormat& format = request.input_format ? *request.input_format : input_format(request.input);
   LoadedInput input;
-  input.loaded = load_scene_as(request.input, format, request.read);
+  SceneReadOptions read = request.read;
+  // A SubD's fitted patches take a tenth of the deviation asked for (given in the output's unit; the
+  // reader works in millimetres), so that the mesh made of them stays near D of the limit surface.
+  if (request.deviation > 0 && read.subd_deviation == 0)
+    read.subd_deviation = kSubdShareOfDeviation * request.deviation * (request.unit ? request.unit->millimetres : 1.0);
+  input.loaded = load_scene_as(request.input, format, read);
   input.scene = request.unit ? in_unit(input.loaded.scene, *request.unit) : input.loaded.scene;
   return input;
 }

@@ -5,6 +5,7 @@
 #include "report/smallest_compressed_mesh.hpp"
 #include "analysis/tessellation/plan_tessellation_hints.hpp"
 #include "analysis/mesh/weld_exact.hpp"
+#include "converters/subd_objects_as_nurbs.hpp"
 #include "converters/walled_read.hpp"
 #include "core/bounding_box.hpp"
 #include "core/geometry_error.hpp"
@@ -88,7 +89,7 @@ BrepTranslation read_mesh_stl(const std::string& path, const SceneReadOptions&) 
 
 // .3dm: faces written as Rhino's render meshes are fallbacks; faces left out or repaired are reported as
 // repairs ("object N face K: ..."); the scene's trims were checked face by face while it was built.
-BrepTranslation read_rhino_3dm(const std::string& path, const SceneReadOptions&) {
+BrepTranslation read_rhino_3dm(const std::string& path, const SceneReadOptions& options) {
   rhino::RhinoScene read = rhino::read_3dm(path);
   BrepTranslation out;
   out.scene = std::move(read.scene);
@@ -97,6 +98,7 @@ BrepTranslation read_rhino_3dm(const std::string& path, const SceneReadOptions&)
     out.fallbacks.push_back({meshed.object, meshed.face, "Brep face", meshed.reason + " (Rhino's render mesh used)"});
   out.face_count = read.face_count;
   out.degenerated_edges.assign(read.edge_count, false);
+  add_subd_objects_as_nurbs(read.subd_objects, options.subd_deviation, out);
   return out;
 }
 

@@ -33,6 +33,7 @@ struct SceneWriteOptions {
 struct SceneReadOptions {
   bool homogeneous_control_points = true;  // VRML/X3D: control points are w·P (false: --euclidean)
   BrepReadOptions brep;                    // STEP/IGES: behind the wall or not, and its limits
+  double subd_deviation = 0;  // .3dm SubD: how far its fitted NURBS patches may be (0: 1e-4 of its diagonal)
 };
 
 struct FileFormat {

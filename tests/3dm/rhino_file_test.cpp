@@ -66,17 +66,12 @@ TEST(RhinoFile, CorpusFilesHaveTheirVersionUnitLayersAndObjectClasses) {
   }
 }
 
-TEST(RhinoFile, SubdObjectsAreSkippedByNameAndMeshesRead) {
+TEST(RhinoFile, SubdObjectsAndMeshesAreRead) {
   const Rhino3dmFile f = read_3dm_file(corpus("v6_rhino_subd_logo.3dm"));
   ASSERT_EQ(f.objects.size(), 12u);
   for (int i = 0; i < 6; ++i) EXPECT_TRUE(std::holds_alternative<TriangleMesh>(f.objects[static_cast<std::size_t>(i)].geometry)) << i;
-  for (int i = 6; i < 12; ++i) {
-    const auto* u = std::get_if<Unsupported>(&f.objects[static_cast<std::size_t>(i)].geometry);
-    ASSERT_NE(u, nullptr) << i;
-    EXPECT_EQ(u->class_name, "ON_SubD");
-    EXPECT_NE(std::find(f.warnings.begin(), f.warnings.end(), "object " + std::to_string(i) + " (ON_SubD): not supported, skipped"),
-              f.warnings.end());
-  }
+  for (int i = 6; i < 12; ++i) EXPECT_TRUE(std::holds_alternative<RhinoSubd>(f.objects[static_cast<std::size_t>(i)].geometry)) << i;
+  EXPECT_TRUE(f.warnings.empty());
   EXPECT_EQ(std::get<TriangleMesh>(f.objects[0].geometry).positions.size(), 174u);
 }
 
@@ -185,7 +180,7 @@ TEST(RhinoFile, AnObjectThatFailsToReadIsSkippedAndTheNextOnesRead) {
                 "object 1 (ON_Mesh): bad.3dm: chunk 0x0002FFFC at offset %zu: ON_Mesh: chunk version 9.0 is not 1.x or 3.x; "
                 "skipped",
                 meshes[1] + 44);
-  ASSERT_EQ(f.warnings.size(), 7u);  // that one and the six SubDs
+  ASSERT_EQ(f.warnings.size(), 1u);  // that one
   EXPECT_EQ(f.warnings[0], expected);
 }
 

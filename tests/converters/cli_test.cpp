@@ -76,16 +76,11 @@ TEST_F(Cli, TruncatedStlFailsWithTheTriangleAndWritesNothing) {
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
-// A conversion that would write a file without geometry fails, naming what the input held: Rhino files
-// whose objects are all of kinds not read (SubD; Rhino 1's legacy layout), and a VRML file with no shape.
+// A conversion that would write a file without geometry fails, naming what the input held: a VRML file with
+// no shape. (The corpus's Rhino files that once did, SubD and Rhino 1 solids, are read now.)
 TEST_F(Cli, NothingToWriteFailsNamingWhatTheInputHeld) {
-  const std::string rhino = std::string(CADNURBS_SHARED_DIR) + "/corpus/3dm/";
   std::ofstream(path("view.wrl")) << "#VRML V2.0 utf8\nViewpoint { position 0 0 10 }\n";
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {rhino + "v7_rhino_logo_subd.3dm",
-       "no geometry to write (object 0 (ON_SubD): not supported, skipped; 5 more such lines)"},
-      {rhino + "v1_five_solids.3dm",
-       "no geometry to write (version 1 file (Rhino 1 legacy layout, no object table): its objects are not read)"},
       {path("view.wrl"), "no geometry to write (the file holds none that cadnurbs reads)"}};
   for (const auto& [input, reason] : cases)
     for (const std::string output : {"out.x3dv", "out.stl", "out.cnb"}) {
