@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "core/geometry_error.hpp"
 #include "formats/3dm/curve_objects.hpp"
 #include "formats/3dm/object_checks.hpp"
 #include "formats/3dm/typecodes.hpp"
@@ -23,16 +24,17 @@ enum class Weights { none, euclidean, homogeneous };
 // `count` points of `dimension` coordinates, each followed by its weight unless `weights` is none.
 void read_points(ArchiveReader& reader, const char* record, int dimension, Weights weights, std::size_t count,
                  std::vector<Eigen::Vector3d>& points, std::vector<double>& out_weights) {
+  // Checked before anything is allocated: counts come from two-byte fields, up to 65535^2 points.
+  const std::size_t per_point = static_cast<std::size_t>(dimension + (weights == Weights::none ? 0 : 1)) * 8;
+  if (count * per_point > reader.bytes_left())
+    refuse(reader, record,
+           std::to_string(count) + " control points need more than the " + std::to_string(reader.bytes_left()) +
+               " bytes left");
   if (weights != Weights::euclidean) {
     read_control_points(reader, record, dimension, weights == Weights::homogeneous, count, points, out_weights);
     return;
   }
   // Euclidean points with their weights: already what core keeps (read_control_points divides).
-  const std::size_t per_point = static_cast<std::size_t>(dimension + 1) * 8;
-  if (count * per_point > reader.bytes_left())
-    refuse(reader, record,
-           std::to_string(count) + " control points need more than the " + std::to_string(reader.bytes_left()) +
-               " bytes left");
   points.assign(count, Eigen::Vector3d::Zero());
   out_weights.assign(count, 1.0);
   for (std::size_t i = 0; i < count; ++i) {
@@ -106,7 +108,11 @@ NurbsCurve read_legacy_curve(ArchiveReader& reader) {
     breaks.push_back(breaks.back() + (s.domain_end() - s.domain_start()));
   }
   if (segments.size() == 1) return std::move(segments.front());
-  return checked(reader, kCurve, join_segments(segments, breaks));
+  try {
+    return checked(reader, kCurve, join_segments(segments, breaks));
+  } catch (const GeometryError& e) {
+    refuse(reader, kCurve, std::string("joining the segments: ") + e.what());
+  }
 }
 
 NurbsSurface read_legacy_surface(ArchiveReader& reader) {

@@ -32,7 +32,8 @@ NurbsCurve read_legacy_spline(ArchiveReader& reader);
 // TCODE_LEGACY_CRVSTUFF: dimension, closed flag, segment count (int16, >= 1), bounding box, then one
 // TCODE_LEGACY_SPL chunk per segment. One segment is returned as it is; more are joined (join_segments of
 // curve_objects.hpp) over the polycurve's parameters: the first segment's domain, each next one appended
-// with its own length of domain. Refuses a chunk other than TCODE_LEGACY_SPL in the segment list.
+// with its own length of domain. Refuses a chunk other than TCODE_LEGACY_SPL in the segment list, and
+// segments that cannot be joined ("joining the segments: <reason>").
 NurbsCurve read_legacy_curve(ArchiveReader& reader);
 
 // TCODE_LEGACY_SRFSTUFF: dimension, form, u and v degree, u and v span counts (uint16; count = order - 1 +

@@ -72,5 +72,29 @@ TEST(LegacyNurbs, SurfacePointsRunVFastestInTheFileAndUFastestInCore) {
     for (int j = 0; j < 2; ++j) EXPECT_EQ(s.point(i, j), Eigen::Vector3d(i, j, 10 * i + j));
 }
 
+TEST(LegacyNurbs, ASurfaceWhoseCountsDoNotFitIsRefusedBeforeAnythingIsAllocated) {
+  testing::ClassData b;
+  b.put<std::int8_t>(3).put<std::uint8_t>(0).put<std::int8_t>(1).put<std::int8_t>(1);
+  b.put<std::uint16_t>(65535).put<std::uint16_t>(65535);  // 65536 x 65536 points
+  b.put<std::int8_t>(0).put<std::int8_t>(0).put<std::uint32_t>(0);
+  b.doubles({0, 0, 0, 1, 1, 1});
+  ArchiveReader knots_missing(b.body, "srf", 1);
+  try {
+    read_legacy_surface(knots_missing);
+    FAIL() << "no error";
+  } catch (const ArchiveError& e) {
+    EXPECT_EQ(std::string(e.what()), "srf: offset 62: 65536 doubles need 65536 * 8 bytes, 0 left");
+  }
+  b.body.append(2 * 65536 * sizeof(double), '\0');  // the knots, then no points
+  ArchiveReader points_missing(b.body, "srf", 1);
+  try {
+    read_legacy_surface(points_missing);
+    FAIL() << "no error";
+  } catch (const ArchiveError& e) {
+    EXPECT_EQ(std::string(e.what()), "srf: offset " + std::to_string(b.body.size()) +
+                                         ": legacy surface: 4294967296 control points need more than the 0 bytes left");
+  }
+}
+
 }  // namespace
 }  // namespace cadnurbs::rhino
