@@ -12,6 +12,18 @@ namespace {
 
 using testing::ClassData;  // little-endian bytes built by hand
 
+// what() of the ArchiveError `read` throws on `bytes` (a V1 record outside any chunk), or "no error".
+template <class Read>
+std::string refusal(const std::string& bytes, const char* name, Read read) {
+  ArchiveReader reader(bytes, name, 1);
+  try {
+    read(reader);
+  } catch (const ArchiveError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
 // A rational quadratic 2D spline with 4 points, both ends clamped: the stored knots 0, 1, 2 stand for
 // openNURBS's 0 0 1 2 2.
 ClassData clamped_rational_spline() {
@@ -42,13 +54,7 @@ TEST(LegacyNurbs, ClampedEndsStoreTheirKnotOnceAndRationalPointsAreEuclidean) {
 TEST(LegacyNurbs, AnOrderBelowTwoIsRefusedNamingTheRecordAndOffset) {
   ClassData b;
   b.put<std::int8_t>(3).put<std::int8_t>(0).put<std::int8_t>(1).put<std::uint16_t>(4);
-  ArchiveReader reader(b.body, "spl", 1);
-  try {
-    read_legacy_spline(reader);
-    FAIL() << "no error";
-  } catch (const ArchiveError& e) {
-    EXPECT_EQ(std::string(e.what()), "spl: offset 5: legacy spline: order 1 is below 2");
-  }
+  EXPECT_EQ(refusal(b.body, "spl", read_legacy_spline), "spl: offset 5: legacy spline: order 1 is below 2");
 }
 
 TEST(LegacyNurbs, SurfacePointsRunVFastestInTheFileAndUFastestInCore) {
@@ -73,27 +79,16 @@ TEST(LegacyNurbs, SurfacePointsRunVFastestInTheFileAndUFastestInCore) {
 }
 
 TEST(LegacyNurbs, ASurfaceWhoseCountsDoNotFitIsRefusedBeforeAnythingIsAllocated) {
-  testing::ClassData b;
+  ClassData b;
   b.put<std::int8_t>(3).put<std::uint8_t>(0).put<std::int8_t>(1).put<std::int8_t>(1);
   b.put<std::uint16_t>(65535).put<std::uint16_t>(65535);  // 65536 x 65536 points
   b.put<std::int8_t>(0).put<std::int8_t>(0).put<std::uint32_t>(0);
   b.doubles({0, 0, 0, 1, 1, 1});
-  ArchiveReader knots_missing(b.body, "srf", 1);
-  try {
-    read_legacy_surface(knots_missing);
-    FAIL() << "no error";
-  } catch (const ArchiveError& e) {
-    EXPECT_EQ(std::string(e.what()), "srf: offset 62: 65536 doubles need 65536 * 8 bytes, 0 left");
-  }
+  EXPECT_EQ(refusal(b.body, "srf", read_legacy_surface), "srf: offset 62: 65536 doubles need 65536 * 8 bytes, 0 left");
   b.body.append(2 * 65536 * sizeof(double), '\0');  // the knots, then no points
-  ArchiveReader points_missing(b.body, "srf", 1);
-  try {
-    read_legacy_surface(points_missing);
-    FAIL() << "no error";
-  } catch (const ArchiveError& e) {
-    EXPECT_EQ(std::string(e.what()), "srf: offset " + std::to_string(b.body.size()) +
-                                         ": legacy surface: 4294967296 control points need more than the 0 bytes left");
-  }
+  EXPECT_EQ(refusal(b.body, "srf", read_legacy_surface),
+            "srf: offset " + std::to_string(b.body.size()) +
+                ": legacy surface: 4294967296 control points need more than the 0 bytes left");
 }
 
 }  // namespace
