@@ -2,10 +2,11 @@
 
 #include <stdexcept>
 
-#include "analysis/subdivision_fit/decimate_within_distance.hpp"
-#include "analysis/subdivision_fit/tag_sharp_edges.hpp"
 #include "analysis/measure/mesh_distance.hpp"
 #include "analysis/subdivision/limit_surface.hpp"
+#include "analysis/subdivision_fit/crease_flat_corner_spans.hpp"
+#include "analysis/subdivision_fit/decimate_within_distance.hpp"
+#include "analysis/subdivision_fit/tag_sharp_edges.hpp"
 
 namespace cadnurbs {
 
@@ -37,7 +38,8 @@ SubdivisionControlMesh fit_best_start(const TriangleMesh& welded, int target_ver
     o.balance_sides = start_balances_sides(start);
     return o;
   };
-  const SubdivisionControlMesh feature_start = decimate_control_mesh(welded, target_vertices, sharp_angle, &r.decimation, keep);
+  const SubdivisionControlMesh feature_start = crease_flat_corner_spans(
+      decimate_control_mesh(welded, target_vertices, sharp_angle, &r.decimation, keep), kFlatCornerSpanAngle);
   SubdivisionControlMesh best = fit_and_measure(welded, feature_start, options_for(FitStart::features), r.features);
   const StartFit* best_fit = &r.features;
 
@@ -48,8 +50,9 @@ SubdivisionControlMesh fit_best_start(const TriangleMesh& welded, int target_ver
   auto beats = [&](const StartFit& a, const StartFit& b) {
     return start_score(a.distance, r.plain_decimation_distance) < start_score(b.distance, r.plain_decimation_distance);
   };
-  SubdivisionControlMesh fitted = fit_and_measure(welded, tag_sharp_edges(r.plain_decimation, sharp_angle), options_for(FitStart::plain),
-                                          r.plain);
+  SubdivisionControlMesh fitted = fit_and_measure(
+      welded, crease_flat_corner_spans(tag_sharp_edges(r.plain_decimation, sharp_angle), kFlatCornerSpanAngle),
+      options_for(FitStart::plain), r.plain);
   if (beats(r.plain, *best_fit)) {
     best = std::move(fitted);
     best_fit = &r.plain;
@@ -58,7 +61,9 @@ SubdivisionControlMesh fit_best_start(const TriangleMesh& welded, int target_ver
 
   const GuardedDecimation guarded = decimate_within_distance(welded, static_cast<int>(plain.positions.size()), keep);
   r.guard = guarded.guard;
-  fitted = fit_and_measure(welded, tag_sharp_edges(guarded.mesh, sharp_angle), options_for(FitStart::guarded), r.guarded);
+  fitted = fit_and_measure(welded,
+                           crease_flat_corner_spans(tag_sharp_edges(guarded.mesh, sharp_angle), kFlatCornerSpanAngle),
+                           options_for(FitStart::guarded), r.guarded);
   if (beats(r.guarded, *best_fit)) {
     best = std::move(fitted);
     r.kept = FitStart::guarded;

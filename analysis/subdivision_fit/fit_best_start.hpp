@@ -55,7 +55,8 @@ double start_score(const DeviationStats& fit, const DeviationStats& decimation);
 // Takes a welded mesh, the vertex target, the sharp angle (radians, >= 0), fit options (their
 // balance_sides is set for the plain and guarded starts), and input vertices every decimation must keep.
 // Decimates with features kept, then plainly and guarded to the vertex count that reached (so all
-// have as many, unless kept vertices stop the plain ones earlier), fits all three, measures each
+// have as many, unless kept vertices stop the plain ones earlier), creases each one's flat spans between
+// corners (crease_flat_corner_spans, at kFlatCornerSpanAngle), fits all three, measures each
 // limit surface (options.levels refinements) and the plain decimation against the input, and returns
 // the fit with the lowest start_score (the first in the order features, plain, guarded on a tie).
 // Until stop 32 a later start had to have a lower RMS and a max no higher: on motor at 400 and 536

@@ -114,6 +114,16 @@ std::vector<double> coarse_vertex_areas(const TriangleMesh& surface, int count) 
 // not fitted (the usual normal-compatibility test of closest-point fitting).
 bool facing_away(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return a.dot(b) < 0; }
 
+// The direction a residual is measured along: the surface normal at the foot point, unless the offset
+// from foot to target turns from it so far that the foot is on a rim or a crease and the target beside
+// the surface, not above it (SubdivisionFitOptions::off_normal_cosine); then the offset itself.
+Eigen::Vector3d residual_direction(const Eigen::Vector3d& normal, const Eigen::Vector3d& offset,
+                                   double off_normal_cosine) {
+  const double length = offset.norm();
+  if (length > 0 && std::abs(normal.dot(offset)) < off_normal_cosine * length) return offset / length;
+  return normal;
+}
+
 // One round's residuals, as distances.
 struct Residuals {
   std::vector<double> data_to_surface;      // per data point
@@ -244,7 +254,9 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       const double d = (eig(point) - data.points[i]).norm();
       weighted_sum += c.weight * d * d;
       weight_total += c.weight;
-      if (!facing_away(c.normal, data.normals[i])) pairs.push_back(std::move(c));
+      const bool away = facing_away(c.normal, data.normals[i]);
+      c.normal = residual_direction(c.normal, c.target - eig(point), options.off_normal_cosine);
+      if (!away) pairs.push_back(std::move(c));
       r.data_to_surface[i] = d;
       r.max = std::max(r.max, d);
     }
@@ -270,8 +282,9 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       const double d = (eig(point) - surface.positions[v]).norm();
       weighted_sum += c.weight * d * d;
       weight_total += c.weight;
-      if (options.fit_limit_points_facing_away || !facing_away(c.normal, surface_normals[v]))
-        pairs.push_back(std::move(c));
+      const bool away = facing_away(c.normal, surface_normals[v]);
+      c.normal = residual_direction(c.normal, c.target - surface.positions[v], options.off_normal_cosine);
+      if (options.fit_limit_points_facing_away || !away) pairs.push_back(std::move(c));
       r.surface_to_data[v] = d;
       r.max = std::max(r.max, d);
     }

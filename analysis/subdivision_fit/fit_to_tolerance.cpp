@@ -5,6 +5,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "analysis/subdivision_fit/crease_flat_corner_spans.hpp"
+
 namespace cadnurbs {
 
 SubdivisionControlMesh fit_to_tolerance(const TriangleMesh& welded, int start_vertices, double sharp_angle,
@@ -17,8 +19,9 @@ SubdivisionControlMesh fit_to_tolerance(const TriangleMesh& welded, int start_ve
   SubdivisionControlMesh fitted;
   const int input_vertices = static_cast<int>(welded.positions.size());
   for (r.rounds = 1;; ++r.rounds) {
-    const SubdivisionControlMesh start =
-        decimate_control_mesh(welded, target, sharp_angle, &r.decimation, {keep.begin(), keep.end()});
+    const SubdivisionControlMesh start = crease_flat_corner_spans(
+        decimate_control_mesh(welded, target, sharp_angle, &r.decimation, {keep.begin(), keep.end()}),
+        kFlatCornerSpanAngle);
     fitted = fit_subdivision_surface(welded, start, options, &r.fit);
     r.met = r.fit.max <= tolerance;
     if (r.met) break;

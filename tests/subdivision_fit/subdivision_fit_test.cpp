@@ -9,20 +9,22 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 
+#include "analysis/measure/mesh_distance.hpp"
+#include "analysis/mesh/weld_vertices.hpp"
+#include "analysis/subdivision/limit_surface.hpp"
+#include "analysis/subdivision_fit/crease_flat_corner_spans.hpp"
 #include "analysis/subdivision_fit/decimate_control_mesh.hpp"
 #include "analysis/subdivision_fit/decimate_within_distance.hpp"
-#include "analysis/subdivision_fit/fit_subdivision_surface.hpp"
 #include "analysis/subdivision_fit/fit_best_start.hpp"
 #include "analysis/subdivision_fit/fit_connectivity_rounds.hpp"
+#include "analysis/subdivision_fit/fit_subdivision_surface.hpp"
 #include "analysis/subdivision_fit/improve_control_connectivity.hpp"
 #include "analysis/subdivision_fit/limit_patches.hpp"
 #include "analysis/subdivision_fit/refit_watching_spans.hpp"
 #include "analysis/subdivision_fit/tag_sharp_edges.hpp"
-#include "analysis/measure/mesh_distance.hpp"
-#include "analysis/subdivision/limit_surface.hpp"
-#include "analysis/mesh/weld_vertices.hpp"
 #include "converters/subdivision_fit_measurement.hpp"
 #include "formats/obj/control_mesh_obj.hpp"
 #include "formats/stl/stl_reader.hpp"
@@ -511,6 +513,118 @@ TEST(SubdivisionFitWithConnectivity, BottleHalvesTheQuadricDecimationsRms) {
   EXPECT_EQ(m.qem.positions.size(), 200u);
   EXPECT_LE(m.limit_distance.rms, 0.5 * m.qem_distance.rms);
   EXPECT_LE(m.limit_distance.max, m.qem_distance.max);
+}
+
+// The outline of an L-shaped block, counter-clockwise seen from +z: a 50 x 10 leg along x and a 10 x 50
+// leg up y at its end; (40, 10) is the inner corner, where a flat end face turns inward.
+const std::vector<Eigen::Vector2d> kLOutline = {{0, 0}, {50, 0}, {50, 60}, {40, 60}, {40, 10}, {0, 10}};
+
+// The L prism from z = 0 to 20 as a Loop control mesh: its 12 corners, each end face 4 triangles (the
+// diagonals from the inner corner, as dm1-id-214's decimation had them), each wall 2, its 18 edges creases.
+SubdivisionControlMesh l_prism_control() {
+  TriangleMesh prism;
+  for (const double z : {0.0, 20.0})
+    for (const Eigen::Vector2d& p : kLOutline) prism.positions.emplace_back(p.x(), p.y(), z);
+  const std::vector<std::array<int, 3>> end = {{0, 1, 4}, {0, 4, 5}, {1, 2, 4}, {4, 2, 3}};
+  for (const auto& t : end) {
+    prism.triangles.push_back({t[0] + 6, t[1] + 6, t[2] + 6});  // top, +z
+    prism.triangles.push_back({t[0], t[2], t[1]});              // bottom, -z
+  }
+  for (int k = 0; k < 6; ++k) {
+    const int a = k, b = (k + 1) % 6;
+    prism.triangles.push_back({a, b, b + 6});
+    prism.triangles.push_back({a, b + 6, a + 6});
+  }
+  return tag_sharp_edges(prism, 30 * M_PI / 180);
+}
+
+// Every vertex of the L prism is a corner (three creases), so its limit surface lies in its faces'
+// planes; but Loop's edge rule puts the new point of the end face's diagonal from the inner corner at
+// 3/8 (40, 10) + 3/8 (50, 0) + 1/8 (0, 0) + 1/8 (50, 60) = (40, 11.25), past the inner corner into
+// the notch. Creased, the flat spans refine inside their triangles: the limit is the prism itself.
+TEST(CreaseFlatCornerSpans, LPrismsLimitSurfaceIsThePrism) {
+  const SubdivisionControlMesh tagged = l_prism_control();
+  ASSERT_EQ(tagged.crease_edges.size(), 18u);
+  const TriangleMesh prism{tagged.positions, tagged.triangles, {}};
+  auto limit_of = [](const SubdivisionControlMesh& control) {
+    return evaluate_limit_mesh(subdivision_limit_mesh(control_mesh_topology(control), 3), control.positions);
+  };
+  EXPECT_GT(mesh_distance(limit_of(tagged), prism).a_to_b.max, 1.0);
+
+  const SubdivisionControlMesh creased = crease_flat_corner_spans(tagged, kFlatCornerSpanAngle);
+  EXPECT_EQ(creased.positions, tagged.positions);
+  EXPECT_EQ(creased.triangles, tagged.triangles);
+  // The three diagonals of each end face and one of each wall; the 18 edges are not tagged twice.
+  EXPECT_EQ(creased.crease_edges.size(), 18u + 6u + 6u);
+  std::set<std::array<int, 2>> distinct(creased.crease_edges.begin(), creased.crease_edges.end());
+  EXPECT_EQ(distinct.size(), creased.crease_edges.size());
+  EXPECT_LT(mesh_distance(limit_of(creased), prism).overall.max, 1e-9);
+
+  // A fold of 2 degrees is not flat at 1; the angle must not be negative.
+  SubdivisionControlMesh folded = tagged;
+  folded.positions[1].z() -= 50 * std::tan(2 * M_PI / 180);  // (50, 0, 0) down: the bottom's spans by it fold
+  EXPECT_LT(crease_flat_corner_spans(folded, kFlatCornerSpanAngle).crease_edges.size(), creased.crease_edges.size());
+  EXPECT_THROW(crease_flat_corner_spans(tagged, -1), std::invalid_argument);
+}
+
+// The L block with a curved top, z = 20 + 3 sin(pi x / 50) sin(pi y / 60), and a flat bottom, every face
+// a grid of `step` (a fine tessellation of a CAD part: the flat bottom keeps its inner corner).
+TriangleMesh bumped_l_block(double step) {
+  TriangleMesh mesh;
+  std::map<std::array<long, 3>, int> index;
+  auto vertex = [&](const Eigen::Vector3d& p) {
+    const std::array<long, 3> key{std::lround(p.x() * 1e6), std::lround(p.y() * 1e6), std::lround(p.z() * 1e6)};
+    const auto [it, added] = index.emplace(key, static_cast<int>(mesh.positions.size()));
+    if (added) mesh.positions.push_back(p);
+    return it->second;
+  };
+  auto top = [](double x, double y) { return 20 + 3 * std::sin(M_PI * x / 50) * std::sin(M_PI * y / 60); };
+  // A grid of nu x nv quads over at(u, v), u and v in [0, 1]; flip turns its triangles over.
+  auto grid = [&](int nu, int nv, bool flip, auto at) {
+    for (int i = 0; i < nu; ++i)
+      for (int j = 0; j < nv; ++j) {
+        const int a = vertex(at(double(i) / nu, double(j) / nv)), b = vertex(at(double(i + 1) / nu, double(j) / nv));
+        const int c = vertex(at(double(i + 1) / nu, double(j + 1) / nv)),
+                  d = vertex(at(double(i) / nu, double(j + 1) / nv));
+        mesh.triangles.push_back(flip ? std::array<int, 3>{a, c, b} : std::array<int, 3>{a, b, c});
+        mesh.triangles.push_back(flip ? std::array<int, 3>{a, d, c} : std::array<int, 3>{a, c, d});
+      }
+  };
+  auto cells = [&](double length) { return std::max(1, static_cast<int>(std::lround(length / step))); };
+  for (const auto& [x0, y0, w, h] : {std::array<double, 4>{0, 0, 50, 10}, std::array<double, 4>{40, 10, 10, 50}}) {
+    grid(cells(w), cells(h), true, [&](double u, double v) { return Eigen::Vector3d(x0 + w * u, y0 + h * v, 0); });
+    grid(cells(w), cells(h), false,
+         [&](double u, double v) { return Eigen::Vector3d(x0 + w * u, y0 + h * v, top(x0 + w * u, y0 + h * v)); });
+  }
+  for (size_t k = 0; k < kLOutline.size(); ++k) {
+    const Eigen::Vector2d a = kLOutline[k], b = kLOutline[(k + 1) % kLOutline.size()];
+    grid(cells((b - a).norm()), cells(20), false, [&](double u, double v) {
+      const Eigen::Vector2d p = a + u * (b - a);
+      return Eigen::Vector3d(p.x(), p.y(), v * top(p.x(), p.y()));
+    });
+  }
+  return mesh;
+}
+
+// Issue 38 item 6, in small: the bumped L block (2,048 triangles) at 60 control vertices. The start that
+// keeps the input's sharp edges, fitted as until then (flat spans not creased, every residual along the
+// normal), has its limit surface reach into the notch, farther than the quadric decimation's max; the
+// whole fit now keeps within both of the issue's bounds.
+TEST(LBlockAgainstQuadric, KeepsTheMaxAtTheInnerCorner) {
+  const TriangleMesh block = weld_vertices(bumped_l_block(2.5), 1e-6);
+  ASSERT_EQ(block.triangles.size(), 2048u);
+  SubdivisionFitRequest request;
+  request.control_vertices = 60;
+  const SubdivisionFitMeasure m = measure_subdivision_fit(block, request);
+  ASSERT_EQ(m.qem.positions.size(), m.control.positions.size());
+  EXPECT_LE(m.limit_distance.rms, 0.5 * m.qem_distance.rms);
+  EXPECT_LE(m.limit_distance.max, m.qem_distance.max);
+
+  SubdivisionFitOptions before;
+  before.off_normal_cosine = 0;
+  StartFit old;
+  fit_and_measure(block, decimate_control_mesh(block, 60, 30 * M_PI / 180), before, old);
+  EXPECT_GT(old.distance.max, m.qem_distance.max);
 }
 
 // All three starts are fitted at the same vertex count and measured; a later one is kept only when its
