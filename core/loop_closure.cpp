@@ -38,4 +38,19 @@ void join_segments(TrimSegment& a, TrimSegment& b) {
   move_end(b, SegmentEnd::start, mid);
 }
 
+void close_loop_gaps(TrimLoop& loop, double tolerance, const std::vector<int>& trim_numbers,
+                     const std::string& loop_name) {
+  const std::size_t n = loop.segments.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    TrimSegment& a = loop.segments[i];
+    TrimSegment& b = loop.segments[(i + 1) % n];
+    const double gap = (segment_end(a) - segment_start(b)).norm();
+    if (gap > tolerance)
+      throw GeometryError(loop_name, "does not close: gap " + std::to_string(gap) + " after trim " +
+                                         std::to_string(trim_numbers.at(i)) + " exceeds the tolerance " +
+                                         std::to_string(tolerance));
+    if (gap > 0) join_segments(a, b);
+  }
+}
+
 }  // namespace cadnurbs

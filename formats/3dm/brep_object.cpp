@@ -357,17 +357,7 @@ TrimmedSurface build_face(int fi, const BrepFace& face, const std::vector<CurveS
     if (built.segments.empty()) throw GeometryError(loop_name, "has no trims");
     // Consecutive trims meet within the trims' own tolerance; close what is left by moving the ends to
     // their midpoint. A larger gap means the loop is not what the file says.
-    const std::size_t n = built.segments.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      auto& a = built.segments[i];
-      auto& b = built.segments[(i + 1) % n];
-      const double gap = (segment_end(a) - segment_start(b)).norm();
-      if (gap > tolerance)
-        throw GeometryError(loop_name, "does not close: gap " + std::to_string(gap) + " after trim " +
-                                           std::to_string(loop.trims[i]) + " exceeds the tolerance " +
-                                           std::to_string(tolerance));
-      if (gap > 0) cadnurbs::join_segments(a, b);
-    }
+    close_loop_gaps(built, tolerance, loop.trims, loop_name);
     // Rhino's rule is the VRML/X3D one (outer counter-clockwise, inner clockwise), in the surface's own
     // (u, v); the loop type decides, the signed area only checks it.
     const double area = loop_signed_area(built);

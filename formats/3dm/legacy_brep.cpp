@@ -1,6 +1,7 @@
 #include "formats/3dm/legacy_brep.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -181,17 +182,9 @@ TrimmedSurface build_face(const LegacyBrep& brep, std::size_t fi) {
       built.edges.push_back(trim.edge >= 0 ? TrimEdgeRef{trim.edge, trim.against_edge} : TrimEdgeRef{});
       tolerance = std::max(tolerance, trim.tolerance_2d);
     }
-    const std::size_t n = built.segments.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      auto& a = built.segments[i];
-      auto& b = built.segments[(i + 1) % n];
-      const double gap = (segment_end(a) - segment_start(b)).norm();
-      if (gap > tolerance)
-        throw GeometryError(loop_name, "does not close: gap " + std::to_string(gap) + " after trim " +
-                                           std::to_string(i + 1) + " exceeds the tolerance " +
-                                           std::to_string(tolerance));
-      if (gap > 0) cadnurbs::join_segments(a, b);
-    }
+    std::vector<int> trim_numbers(built.segments.size());
+    std::iota(trim_numbers.begin(), trim_numbers.end(), 1);
+    close_loop_gaps(built, tolerance, trim_numbers, loop_name);
     // Outer loops counter-clockwise, holes clockwise in the surface's own (u, v), as in later Breps.
     const double area = loop_signed_area(built);
     if ((loop.type == 0 && area < 0) || (loop.type == 1 && area > 0)) built = reversed(built);

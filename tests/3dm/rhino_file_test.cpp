@@ -104,14 +104,6 @@ TEST(RhinoFile, ObjectNamesLayersAndColoursFromTheAttributes) {
   EXPECT_EQ(read_3dm_file(corpus("v7_my_surfaces.3dm")).objects[0].attributes.layer_index, -1);
 }
 
-TEST(RhinoFile, VersionOneFileGivesNoObjectsAndAWarning) {
-  const Rhino3dmFile f = read_3dm_file(corpus("v1_five_solids.3dm"));
-  EXPECT_EQ(f.archive_version, 1);
-  EXPECT_TRUE(f.objects.empty());
-  ASSERT_EQ(f.warnings.size(), 1u);
-  EXPECT_NE(f.warnings[0].find("version 1"), std::string::npos);
-}
-
 TEST(RhinoFile, StartSectionAndVersionAreChecked) {
   const auto error = [](const std::string& bytes) {
     try {
