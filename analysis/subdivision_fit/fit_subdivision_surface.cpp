@@ -115,12 +115,12 @@ std::vector<double> coarse_vertex_areas(const TriangleMesh& surface, int count) 
 bool facing_away(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return a.dot(b) < 0; }
 
 // The direction a residual is measured along: the surface normal at the foot point, unless the offset
-// from foot to target turns from it so far that the foot is on a rim or a crease and the target beside
-// the surface, not above it (SubdivisionFitOptions::off_normal_cosine); then the offset itself.
+// is longer than `far` and turns from it so far that the foot is on a rim or a crease and the target
+// beside the surface, not above it (SubdivisionFitOptions::off_normal_cosine); then the offset itself.
 Eigen::Vector3d residual_direction(const Eigen::Vector3d& normal, const Eigen::Vector3d& offset,
-                                   double off_normal_cosine) {
+                                   double off_normal_cosine, double far) {
   const double length = offset.norm();
-  if (length > 0 && std::abs(normal.dot(offset)) < off_normal_cosine * length) return offset / length;
+  if (length > far && std::abs(normal.dot(offset)) < off_normal_cosine * length) return offset / length;
   return normal;
 }
 
@@ -238,6 +238,10 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
     r.surface_owner.resize(static_cast<size_t>(limit.coarser_vertex_count));
     std::vector<Correspondence> pairs;
     pairs.reserve(data.points.size() + surface.positions.size());
+    // Only residuals far beyond the best round's RMS turn to their offsets: near the surface the
+    // offsets of noise and of the limit mesh's facets point anywhere, and fitting along them slows the
+    // sliding (on a noisy vessel every residual turned: 3 to 4 times the rounds).
+    const double far = options.off_normal_rms_share * best.rms;
     double weighted_sum = 0, weight_total = 0;  // squared distances and weights, both sides
     for (size_t i = 0; i < data.points.size(); ++i) {
       const auto [point, primitive] = tree.closest_point_and_primitive(cg(data.points[i]));
@@ -255,7 +259,7 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       weighted_sum += c.weight * d * d;
       weight_total += c.weight;
       const bool away = facing_away(c.normal, data.normals[i]);
-      c.normal = residual_direction(c.normal, c.target - eig(point), options.off_normal_cosine);
+      c.normal = residual_direction(c.normal, c.target - eig(point), options.off_normal_cosine, far);
       if (!away) pairs.push_back(std::move(c));
       r.data_to_surface[i] = d;
       r.max = std::max(r.max, d);
@@ -283,7 +287,7 @@ Residuals fit_positions(const std::vector<K::Triangle_3>& input_triangles,
       weighted_sum += c.weight * d * d;
       weight_total += c.weight;
       const bool away = facing_away(c.normal, surface_normals[v]);
-      c.normal = residual_direction(c.normal, c.target - surface.positions[v], options.off_normal_cosine);
+      c.normal = residual_direction(c.normal, c.target - surface.positions[v], options.off_normal_cosine, far);
       if (options.fit_limit_points_facing_away || !away) pairs.push_back(std::move(c));
       r.surface_to_data[v] = d;
       r.max = std::max(r.max, d);

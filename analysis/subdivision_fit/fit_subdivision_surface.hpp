@@ -42,6 +42,9 @@ struct SubdivisionFitOptions {
   // tangent plane and only the 0.001 point-to-point share saw it. On dm1-id-214.stp meshed by
   // OpenCASCADE (issue 38 item 6) the input-to-limit max went from 1.51 to 0.46 mm. 0: always the normal.
   double off_normal_cosine = 0.7;
+  // ... and only where the distance is over this many times the best round's RMS so far (none in the
+  // first round): the far residuals, which make the max.
+  double off_normal_rms_share = 3;
 };
 
 struct SubdivisionFitReport {
