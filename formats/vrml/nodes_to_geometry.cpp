@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string_view>
 #include <type_traits>
 
 #include "core/analytic_surface.hpp"
@@ -22,27 +23,26 @@ class GeometryReader {
     throw_parse_error(context_.file, node.line, node.type + ": " + reason);
   }
 
-  std::vector<Geometry> read() {
-    const std::string& type = node_.type;
-    if (type == "NurbsSurface" || type == "NurbsPatchSurface") return {checked(TrimmedSurface{surface(node_), {}}, node_)};
-    if (type == "NurbsTrimmedSurface") return {checked(TrimmedSurface{surface(node_), loops(node_)}, node_)};
-    if (type == "TrimmedSurface") {
-      const auto* s = node_.get<SFNode>("surface");
-      if (!s || !s->node) fail(node_, "has no surface");
-      if (s->node->type != "NurbsSurface") fail(node_, "surface is a " + s->node->type + ", not a NurbsSurface");
-      return {checked(TrimmedSurface{surface(*s->node), loops(node_)}, node_)};
-    }
-    if (type == "NurbsCurve") return {checked(curve(node_, 3), node_)};
-    // Without a coord node, X3D draws nothing (white_dune's robot fills one in by a Script later).
-    const bool has_coord = node_.get<SFNode>("coord") && node_.get<SFNode>("coord")->node;
-    if ((type == "IndexedFaceSet" || type == "IndexedLineSet" || type == "IndexedTriangleSet") && !has_coord) return {};
-    if (type == "IndexedFaceSet") return {checked(face_set(), node_)};
-    if (type == "IndexedLineSet") return line_set();
-    if (type == "Box") return {box()};
-    if (type == "Sphere") return {checked(sphere(), node_)};
-    if (type == "IndexedTriangleSet") return {checked(triangle_set(), node_)};
-    fail(node_, "is not a geometry node cadnurbs reads");
+  std::vector<Geometry> read() const;
+
+  // One reader per geometry node type; kGeometryNodes below says which serves which.
+  std::vector<Geometry> patch_surface() const { return {checked(TrimmedSurface{surface(node_), {}}, node_)}; }
+  std::vector<Geometry> trimmed_patch_surface() const {
+    return {checked(TrimmedSurface{surface(node_), loops(node_)}, node_)};
   }
+  // VRML97's TrimmedSurface holds its surface as a node of its own.
+  std::vector<Geometry> surface_with_contours() const {
+    const auto* s = node_.get<SFNode>("surface");
+    if (!s || !s->node) fail(node_, "has no surface");
+    if (s->node->type != "NurbsSurface") fail(node_, "surface is a " + s->node->type + ", not a NurbsSurface");
+    return {checked(TrimmedSurface{surface(*s->node), loops(node_)}, node_)};
+  }
+  std::vector<Geometry> space_curve() const { return {checked(curve(node_, 3), node_)}; }
+  std::vector<Geometry> indexed_faces() const { return {checked(face_set(), node_)}; }
+  std::vector<Geometry> indexed_lines() const { return line_set(); }
+  std::vector<Geometry> indexed_triangles() const { return {checked(triangle_set(), node_)}; }
+  std::vector<Geometry> box_mesh() const { return {box()}; }
+  std::vector<Geometry> sphere_surface() const { return {checked(sphere(), node_)}; }
 
  private:
   template <class G>
@@ -365,14 +365,43 @@ class GeometryReader {
   const GeometryReadContext& context_;
 };
 
+// The geometry nodes cadnurbs reads, one row each. `needs_coord`: without a coord node X3D draws nothing
+// (white_dune's robot fills one in by a Script later), so such a node gives no geometry.
+struct GeometryNodeRow {
+  std::string_view type;
+  bool needs_coord;
+  std::vector<Geometry> (GeometryReader::*read)() const;
+};
+
+constexpr GeometryNodeRow kGeometryNodes[] = {
+    {"NurbsSurface", false, &GeometryReader::patch_surface},
+    {"NurbsPatchSurface", false, &GeometryReader::patch_surface},
+    {"NurbsTrimmedSurface", false, &GeometryReader::trimmed_patch_surface},
+    {"TrimmedSurface", false, &GeometryReader::surface_with_contours},
+    {"NurbsCurve", false, &GeometryReader::space_curve},
+    {"IndexedFaceSet", true, &GeometryReader::indexed_faces},
+    {"IndexedLineSet", true, &GeometryReader::indexed_lines},
+    {"IndexedTriangleSet", true, &GeometryReader::indexed_triangles},
+    {"Box", false, &GeometryReader::box_mesh},
+    {"Sphere", false, &GeometryReader::sphere_surface},
+};
+
+const GeometryNodeRow* geometry_node_row(std::string_view type) {
+  for (const auto& row : kGeometryNodes)
+    if (row.type == type) return &row;
+  return nullptr;
+}
+
+std::vector<Geometry> GeometryReader::read() const {
+  const GeometryNodeRow* row = geometry_node_row(node_.type);
+  if (!row) fail(node_, "is not a geometry node cadnurbs reads");
+  if (row->needs_coord && !(node_.get<SFNode>("coord") && node_.get<SFNode>("coord")->node)) return {};
+  return (this->*(row->read))();
+}
+
 }  // namespace
 
-bool reads_geometry_node(const std::string& type) {
-  static const char* const types[] = {"NurbsSurface",   "NurbsPatchSurface", "NurbsTrimmedSurface", "TrimmedSurface",
-                                      "NurbsCurve",     "IndexedFaceSet",    "IndexedLineSet",      "Box",
-                                      "Sphere",         "IndexedTriangleSet"};
-  return std::find(std::begin(types), std::end(types), type) != std::end(types);
-}
+bool reads_geometry_node(const std::string& type) { return geometry_node_row(type) != nullptr; }
 
 std::vector<Geometry> geometry_from_node(const Node& node, const GeometryReadContext& context) {
   return GeometryReader(node, context).read();
