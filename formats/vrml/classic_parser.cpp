@@ -41,7 +41,6 @@ class ClassicParser {
   }
 
   const ClassicToken& peek() {
-    if (pushed_back_) return *pushed_back_;
     try {
       return tokens_.peek();
     } catch (const std::runtime_error& e) {
@@ -50,11 +49,6 @@ class ClassicParser {
   }
 
   ClassicToken next() {
-    if (pushed_back_) {
-      ClassicToken token = std::move(*pushed_back_);
-      pushed_back_.reset();
-      return token;
-    }
     try {
       return tokens_.next();
     } catch (const std::runtime_error& e) {
@@ -165,10 +159,10 @@ class ClassicParser {
     return expect(Kind::word, "a PROTO field after IS").text;
   }
 
-  // An interface declaration "<access> <Type> <name>", with the value a PROTO's field or exposedField
-  // (or a Script's) has, or an IS connection in a PROTO body.
-  FieldSchema declaration(bool with_value, InterfaceDeclaration& out, std::optional<std::string>& is) {
-    const ClassicToken keyword = expect(Kind::word, "a field declaration");
+  // An interface declaration "<access> <Type> <name>" whose access keyword has been read, with the value a
+  // PROTO's field or exposedField (or a Script's) has, or an IS connection in a PROTO body.
+  FieldSchema declaration(const ClassicToken& keyword, bool with_value, InterfaceDeclaration& out,
+                          std::optional<std::string>& is) {
     const auto access = declaration_access(keyword.text);
     if (!access) fail(keyword.line, "expected field, exposedField, eventIn or eventOut, found '" + keyword.text + "'");
     const ClassicToken type = expect(Kind::word, "a field type");
@@ -195,7 +189,7 @@ class ClassicParser {
       if (peek().kind == Kind::end) fail(name.line, "the interface of " + name.text + " is never closed");
       InterfaceDeclaration d;
       std::optional<std::string> is;
-      schema.fields.push_back(declaration(!external, d, is));
+      schema.fields.push_back(declaration(expect(Kind::word, "a field declaration"), !external, d, is));
       if (is) fail(name.line, "IS in the interface of " + name.text);
       proto.interface.push_back(std::move(d));
     }
@@ -284,10 +278,9 @@ class ClassicParser {
       if (field_name.kind != Kind::word)
         fail(field_name.line, "expected a field of " + node->type + " or '}', found " + describe(field_name));
       if (declaration_access(field_name.text) && declares_own_fields(node->type)) {
-        tokens_back(field_name);
         InterfaceDeclaration d;
         std::optional<std::string> is;
-        declared.push_back(declaration(true, d, is));
+        declared.push_back(declaration(field_name, true, d, is));
         if (is) node->is_connections.push_back(IsConnection{d.name, *is});
         if (d.default_value)
           node->fields.push_back(Field{d.name, std::move(*d.default_value), {}, field_name.line});
@@ -383,7 +376,6 @@ class ClassicParser {
 
 
   // Puts back a token just read (a declaration keyword): the declaration reader starts from it.
-  void tokens_back(const ClassicToken& token) { pushed_back_ = token; }
 
   // One word of a FieldWords value: a number or TRUE/FALSE.
   std::string word(const ClassicToken& field) {
@@ -516,7 +508,6 @@ class ClassicParser {
   NodeDocument document_;
   std::map<std::string, NodeSchema> proto_schemas_;
   int body_depth_ = 0;  // inside PROTO bodies: IS is allowed
-  std::optional<ClassicToken> pushed_back_;
   // Recursion guard: far deeper than any real scene, far shallower than the stack.
   static constexpr int max_depth = 1000;
   int depth_ = 0;
