@@ -26,11 +26,10 @@ constexpr int kMaxLevel = 10;  // the smallest span 2^-10, OpenSubdiv's deepest 
 // Corner c of a patch is where side c starts: (0,0), (1,0), (1,1), (0,1).
 constexpr double kCornerUv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
-// The point of side `side` at t in [0, 1], running counter-clockwise.
+// The point of side `side` at t in [0, 1], running counter-clockwise from corner `side`.
 Eigen::Vector2d side_uv(int side, double t) {
-  static constexpr double kStart[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   static constexpr double kStep[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-  return {kStart[side][0] + t * kStep[side][0], kStart[side][1] + t * kStep[side][1]};
+  return {kCornerUv[side][0] + t * kStep[side][0], kCornerUv[side][1] + t * kStep[side][1]};
 }
 
 // Index of the k-th control point of side `side` (counter-clockwise) in a count x count grid.
