@@ -34,17 +34,24 @@ namespace {
 
 const Eigen::Vector3d kHalf(20, 10, 5);  // a 40 x 20 x 10 box centred on the origin
 
-// The box with each face a grid of n x n quads (two triangles each), welded, outward; the top face
-// (+z) a grid of top_n x top_n when given.
-TriangleMesh gridded_box(int n, int top_n = 0) {
-  TriangleMesh mesh;
-  std::map<std::array<long, 3>, int> index;
-  auto vertex = [&](const Eigen::Vector3d& p) {
+// Index of p in mesh.positions, added the first time: points equal to 1e-6 are one vertex (the grids
+// built below meet on shared edges).
+struct WeldedVertices {
+  TriangleMesh& mesh;
+  std::map<std::array<long, 3>, int> index = {};
+  int operator()(const Eigen::Vector3d& p) {
     const std::array<long, 3> key{std::lround(p.x() * 1e6), std::lround(p.y() * 1e6), std::lround(p.z() * 1e6)};
     const auto [it, added] = index.emplace(key, static_cast<int>(mesh.positions.size()));
     if (added) mesh.positions.push_back(p);
     return it->second;
-  };
+  }
+};
+
+// The box with each face a grid of n x n quads (two triangles each), welded, outward; the top face
+// (+z) a grid of top_n x top_n when given.
+TriangleMesh gridded_box(int n, int top_n = 0) {
+  TriangleMesh mesh;
+  WeldedVertices vertex{mesh};
   for (int axis = 0; axis < 3; ++axis)
     for (const double side : {-1.0, 1.0}) {
       const int u = (axis + 1) % 3, v = (axis + 2) % 3;
@@ -571,13 +578,7 @@ TEST(CreaseFlatCornerSpans, LPrismsLimitSurfaceIsThePrism) {
 // a grid of `step` (a fine tessellation of a CAD part: the flat bottom keeps its inner corner).
 TriangleMesh bumped_l_block(double step) {
   TriangleMesh mesh;
-  std::map<std::array<long, 3>, int> index;
-  auto vertex = [&](const Eigen::Vector3d& p) {
-    const std::array<long, 3> key{std::lround(p.x() * 1e6), std::lround(p.y() * 1e6), std::lround(p.z() * 1e6)};
-    const auto [it, added] = index.emplace(key, static_cast<int>(mesh.positions.size()));
-    if (added) mesh.positions.push_back(p);
-    return it->second;
-  };
+  WeldedVertices vertex{mesh};
   auto top = [](double x, double y) { return 20 + 3 * std::sin(M_PI * x / 50) * std::sin(M_PI * y / 60); };
   // A grid of nu x nv quads over at(u, v), u and v in [0, 1]; flip turns its triangles over.
   auto grid = [&](int nu, int nv, bool flip, auto at) {
