@@ -25,10 +25,14 @@ Eigen::MatrixXd collocation(const std::vector<double>& knots, const std::vector<
 
 }  // namespace
 
-std::vector<double> graded_cubic_knots(int levels) {
+std::vector<double> graded_cubic_knots(int levels, bool halved) {
   std::vector<double> knots(4, 0.0);
   for (int j = levels; j >= 1; --j) knots.push_back(std::ldexp(1.0, -j));
   for (int j = 2; j <= levels; ++j) knots.push_back(1 - std::ldexp(1.0, -j));
+  if (halved)
+    for (int j = 2; j <= levels; ++j)
+      knots.insert(knots.end(), {1.5 * std::ldexp(1.0, -j), 1 - 1.5 * std::ldexp(1.0, -j)});
+  std::sort(knots.begin() + 4, knots.end());
   knots.insert(knots.end(), 4, 1.0);
   return knots;
 }

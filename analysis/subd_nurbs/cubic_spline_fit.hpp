@@ -11,8 +11,11 @@ namespace cadnurbs::subd_nurbs {
 // 1,1,1,1 (2 levels spans, levels >= 1). Symmetric, so a side read backwards has the same knots. The
 // limit surface of a quad with an extraordinary corner is bicubic on the dyadic squares that avoid the
 // corner, so on every span but the corner ones this space holds it exactly (a uniform grid of 2^levels
-// spans would hold no more there, with far more points).
-std::vector<double> graded_cubic_knots(int levels);
+// spans would hold no more there, with far more points). `halved` adds the middle of every span but the end
+// ones (3/8, 3/16, ..., and 1 - them): where Rhino's sector coefficients shape the limit (a tagged point's
+// neighbours at every level are special too) it is bicubic on squares of level j only from 2 of them away
+// from the corner on, which these knots follow.
+std::vector<double> graded_cubic_knots(int levels, bool halved = false);
 
 // Parameters for the fit's samples: `per_span` + 1 in every span of `knots` (ends included) and
 // `end_steps` more, geometric, inside each end span, where the fit has to work.

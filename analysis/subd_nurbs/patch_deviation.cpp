@@ -56,7 +56,7 @@ Bezier bicubic_bezier_points(const Bezier& bspline) {
   return out;
 }
 
-PatchDeviation patch_deviation(const NurbsSurface& fit, const SubdLimitSurface& limit, int patch) {
+PatchDeviation patch_deviation(const NurbsSurface& fit, const RhinoLimitSurface& limit, int patch) {
   std::vector<double> breaks(fit.u_knots.begin() + 3, fit.u_knots.end() - 3);  // the spans' ends
   breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
   const int spans = static_cast<int>(breaks.size()) - 1;

@@ -8,7 +8,7 @@
 // coefficients of both restricted to the rectangle (blossoming), subtracted. Sampled on the end caps (the
 // squares of side 2^-10 at extraordinary features, where OpenSubdiv's Gregory patch stands in for the
 // limit): 5 x 5 points each.
-#include "analysis/subd_nurbs/subd_limit_surface.hpp"
+#include "analysis/subd_nurbs/rhino_limit_surface.hpp"
 #include "core/nurbs_surface.hpp"
 
 namespace cadnurbs::subd_nurbs {
@@ -19,7 +19,7 @@ struct PatchDeviation {
 };
 
 // `fit`: a polynomial bicubic surface over [0, 1]^2 (orders 4).
-PatchDeviation patch_deviation(const NurbsSurface& fit, const SubdLimitSurface& limit, int patch);
+PatchDeviation patch_deviation(const NurbsSurface& fit, const RhinoLimitSurface& limit, int patch);
 
 // The Bezier points (index i + 4 j, u fastest) of a uniform bicubic B-spline patch of 4 x 4 points.
 std::array<Eigen::Vector3d, 16> bicubic_bezier_points(const std::array<Eigen::Vector3d, 16>& bspline);

@@ -8,8 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <utility>
 #include <vector>
 
 #include "core/geometry_error.hpp"
@@ -29,29 +27,6 @@ struct OsdPoint {
 };
 
 constexpr int kIsolationLevel = 10;  // OpenSubdiv's deepest
-
-// Refuses edges of 3+ faces and edges two faces run the same way.
-void check_manifold(const SubdControlNet& net, const std::string& entity) {
-  auto for_each_side = [&](auto&& visit) {
-    for (size_t f = 0; f < net.faces.size(); ++f)
-      for (size_t k = 0; k < net.faces[f].size(); ++k)
-        visit(static_cast<int>(f), net.faces[f][k], net.faces[f][(k + 1) % net.faces[f].size()]);
-  };
-  std::map<std::pair<int, int>, int> uses;
-  for_each_side([&](int, int a, int b) {
-    if (++uses[{std::min(a, b), std::max(a, b)}] == 3)
-      throw GeometryError(entity, "edge " + std::to_string(std::min(a, b)) + "-" + std::to_string(std::max(a, b)) +
-                                      " has 3 or more faces (non-manifold)");
-  });
-  std::map<std::pair<int, int>, int> face_of_side;
-  for_each_side([&](int f, int a, int b) {
-    const auto [side, fresh] = face_of_side.emplace(std::pair{a, b}, f);
-    if (!fresh)
-      throw GeometryError(entity, "faces " + std::to_string(side->second) + " and " + std::to_string(f) +
-                                      " both run edge " + std::to_string(a) + "-" + std::to_string(b) +
-                                      " the same way (orientation not consistent)");
-  });
-}
 
 using Refiner = std::unique_ptr<Far::TopologyRefiner>;
 
@@ -85,34 +60,6 @@ Refiner make_refiner(const SubdControlNet& net, const std::string& entity) {
   return refiner;
 }
 
-// The net after one Catmull-Clark step (all quads; face f's children in order, child k at its point k),
-// its sharp edges and corners carried over: where the net has faces other than quads, a quad side would
-// otherwise face two half sides of the other face's corner patches.
-SubdControlNet one_step(const SubdControlNet& net, const std::string& entity) {
-  Refiner refiner = make_refiner(net, entity);
-  Far::TopologyRefiner::UniformOptions step(1);
-  step.fullTopologyInLastLevel = true;  // its edges and their sharpness
-  refiner->RefineUniform(step);
-  const Far::TopologyLevel& level = refiner->GetLevel(1);
-  std::vector<OsdPoint> points(refiner->GetNumVerticesTotal());
-  for (size_t i = 0; i < net.points.size(); ++i) points[i].p = net.points[i];
-  OsdPoint* children = points.data() + net.points.size();
-  Far::PrimvarRefinerReal<double>(*refiner).Interpolate(1, points.data(), children);
-  SubdControlNet refined;
-  for (int v = 0; v < level.GetNumVertices(); ++v) {
-    refined.points.push_back(points[net.points.size() + v].p);
-    if (Sdc::Crease::IsInfinite(level.GetVertexSharpness(v))) refined.corner_points.push_back(v);
-  }
-  for (int f = 0; f < level.GetNumFaces(); ++f) {
-    const auto corners = level.GetFaceVertices(f);
-    refined.faces.emplace_back(corners.begin(), corners.end());
-  }
-  for (int e = 0; e < level.GetNumEdges(); ++e)
-    if (Sdc::Crease::IsInfinite(level.GetEdgeSharpness(e)))
-      refined.crease_edges.push_back({level.GetEdgeVertices(e)[0], level.GetEdgeVertices(e)[1]});
-  return refined;
-}
-
 }  // namespace
 
 struct SubdLimitSurface::Impl {
@@ -124,13 +71,8 @@ struct SubdLimitSurface::Impl {
   std::vector<std::array<PatchSide, 4>> sides;  // per patch
 };
 
-SubdLimitSurface::SubdLimitSurface(const SubdControlNet& given, const std::string& entity)
+SubdLimitSurface::SubdLimitSurface(const SubdControlNet& net, const std::string& entity)
     : impl_(std::make_unique<Impl>()) {
-  validate(given, entity);
-  check_manifold(given, entity);
-  const bool all_quads =
-      std::all_of(given.faces.begin(), given.faces.end(), [](const auto& face) { return face.size() == 4; });
-  const SubdControlNet net = all_quads ? given : one_step(given, entity);
   impl_->refiner = make_refiner(net, entity);
 
   Far::PatchTableFactory::Options options(kIsolationLevel);
@@ -161,12 +103,9 @@ SubdLimitSurface::SubdLimitSurface(const SubdControlNet& given, const std::strin
   const int patches = ptex.GetNumFaces();
   impl_->sides.resize(patches);
   for (int f = 0; f < static_cast<int>(net.faces.size()); ++f) {
-    const int quadrants = net.faces[f].size() == 4 ? 1 : static_cast<int>(net.faces[f].size());
-    for (int q = 0; q < quadrants; ++q) {
-      int faces[4], edges[4];
-      ptex.GetAdjacency(*impl_->refiner, f, q, faces, edges);
-      for (int k = 0; k < 4; ++k) impl_->sides[ptex.GetFaceId(f) + q][k] = {faces[k], faces[k] < 0 ? -1 : edges[k]};
-    }
+    int faces[4], edges[4];
+    ptex.GetAdjacency(*impl_->refiner, f, 0, faces, edges);
+    for (int k = 0; k < 4; ++k) impl_->sides[ptex.GetFaceId(f)][k] = {faces[k], faces[k] < 0 ? -1 : edges[k]};
   }
 
   impl_->pieces.resize(patches);

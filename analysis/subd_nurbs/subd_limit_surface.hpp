@@ -2,20 +2,19 @@
 // The Catmull-Clark limit surface of a SubdControlNet, patch by patch, through OpenSubdiv 3.5 (Far): what
 // subd_to_nurbs fits, copies and measures against (internal to analysis/subd_nurbs).
 //
-// Patches: one per quad of the net, or, when the net has faces other than quads, one per quad of the net
-// after one Catmull-Clark step (made by OpenSubdiv, sharp edges and corners carried over; face f's
-// children in order); OpenSubdiv's ptex faces, each over (u, v) in [0, 1]^2. A quad's (0, 0) is its first
-// point, u runs toward its second and v toward its last, so Su x Sv points where the face does (outward).
+// Patches: one per quad of the net (all quads), OpenSubdiv's ptex faces, each over (u, v) in [0, 1]^2. A
+// quad's (0, 0) is its first point, u runs toward its second and v toward its last, so Su x Sv points where
+// the face does (outward).
 // Sides k = 0..3 run counter-clockwise: v = 0, u = 1, v = 1, u = 0.
 //
-// Rules: crease edges and boundary edges are infinitely sharp (the limit there is the cubic B-spline of the
+// Rules: textbook Catmull-Clark (OpenSubdiv's); crease edges and boundary edges are infinitely sharp (the limit there is the cubic B-spline of the
 // crease points), corner points stay where they are; everything else is smooth. Away from extraordinary
 // features the limit is OpenSubdiv's regular B-spline patches, exact; features are isolated adaptively to
 // level 10, where the square of side 2^-10 touching them is a Gregory patch (OpenSubdiv's end cap, exact
 // at its corners: the limit-position masks); everywhere else every point is exact.
 //
-// Refuses (GeometryError(entity, reason)) what validate(SubdControlNet) refuses, an edge of three or more
-// faces (non-manifold) and an edge two faces run the same way (orientation not consistent).
+// In: a net check_manifold() accepts, all quads. Refuses (GeometryError(entity, reason)) a topology
+// OpenSubdiv refuses.
 #include <Eigen/Core>
 #include <array>
 #include <memory>

@@ -9,7 +9,7 @@
 
 #include "analysis/subd_nurbs/cubic_spline_fit.hpp"
 #include "analysis/subd_nurbs/patch_deviation.hpp"
-#include "analysis/subd_nurbs/subd_limit_surface.hpp"
+#include "analysis/subd_nurbs/rhino_limit_surface.hpp"
 #include "core/geometry_error.hpp"
 #include "core/knot_insertion.hpp"
 #include "core/union_find.hpp"
@@ -18,7 +18,7 @@ namespace cadnurbs {
 
 namespace {
 
-using subd_nurbs::SubdLimitSurface;
+using subd_nurbs::RhinoLimitSurface;
 using Row = std::vector<Eigen::Vector3d>;
 
 constexpr int kMaxLevel = 10;  // the smallest span 2^-10, OpenSubdiv's deepest isolation
@@ -97,7 +97,7 @@ struct Sides {
   std::vector<std::array<int, 2>> owner;      // per edge: (patch, side) whose direction it takes
 };
 
-Sides number_sides(const SubdLimitSurface& limit) {
+Sides number_sides(const RhinoLimitSurface& limit) {
   Sides sides;
   const int patches = limit.patch_count();
   sides.number.assign(patches, {-1, -1, -1, -1});
@@ -119,7 +119,7 @@ Sides number_sides(const SubdLimitSurface& limit) {
 
 // One position per point of the net where patches meet (corners joined across shared sides), taken from the first patch
 // corner there.
-std::vector<std::array<Eigen::Vector3d, 4>> corner_positions(const SubdLimitSurface& limit) {
+std::vector<std::array<Eigen::Vector3d, 4>> corner_positions(const RhinoLimitSurface& limit) {
   const int patches = limit.patch_count();
   UnionFind corners(4 * patches);
   for (int p = 0; p < patches; ++p)
@@ -146,7 +146,7 @@ std::vector<std::array<Eigen::Vector3d, 4>> corner_positions(const SubdLimitSurf
 
 SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_edge_number, const std::string& entity) {
   if (!(deviation > 0)) throw GeometryError(entity, "deviation must be > 0");
-  const SubdLimitSurface limit(net, entity);
+  const RhinoLimitSurface limit(net, entity);
   const int patches = limit.patch_count();
   const Sides sides = number_sides(limit);
   const auto corners = corner_positions(limit);
@@ -174,6 +174,9 @@ SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_e
   // fitted neighbours, so every side it holds lies in its space (graded knots nest) and goes in by knot
   // insertion where its k is lower (the same curve to rounding; bit for bit where the k are equal).
   SubdNurbs result;
+  // One knot family per SubD, so that every side nests in both its patches' knots.
+  bool halved = false;
+  for (int p = 0; p < patches; ++p) halved = halved || limit.follows_sector_coefficients(p);
   std::vector<NurbsSurface> fitted(patches);
   std::vector<int> wanted(patches, 1), level_of(patches, 0);
   auto fitted_neighbour = [&](int p, int k) {
@@ -201,7 +204,7 @@ SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_e
         continue;
       }
       const int level = other.patch >= 0 ? std::max(wanted[p], wanted[other.patch]) : wanted[p];
-      const std::vector<double> knots = subd_nurbs::graded_cubic_knots(level);
+      const std::vector<double> knots = subd_nurbs::graded_cubic_knots(level, halved);
       const std::vector<double> params = subd_nurbs::sample_params(knots, 4, 6);
       Row samples;
       for (double t : params) {
@@ -214,14 +217,14 @@ SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_e
     bool all_within = true;
     for (int p = 0; p < patches; ++p) {
       if (exact[p]) continue;
-      const std::vector<double> knots = subd_nurbs::graded_cubic_knots(level_of[p]);
+      const std::vector<double> knots = subd_nurbs::graded_cubic_knots(level_of[p], halved);
       const std::vector<double> params = subd_nurbs::sample_params(knots, 4, 6);
       NurbsSurface& s = fitted[p] = fitted_surface(knots);
       for (int k = 0; k < 4; ++k) {
         const int e = sides.number[p][k];
         const std::vector<double> bezier = {0, 0, 0, 0, 1, 1, 1, 1};
-        Row row =
-            reknotted(curves[e], curve_level[e] == 0 ? bezier : subd_nurbs::graded_cubic_knots(curve_level[e]), knots);
+        Row row = reknotted(
+            curves[e], curve_level[e] == 0 ? bezier : subd_nurbs::graded_cubic_knots(curve_level[e], halved), knots);
         if (sides.reversed[p][k]) std::reverse(row.begin(), row.end());
         set_side_row(s, k, row);
       }
@@ -256,6 +259,7 @@ SubdNurbs subd_to_nurbs(const SubdControlNet& net, double deviation, int first_e
     patch.loops.push_back(std::move(loop));
     result.patches.push_back(std::move(patch));
     ++(exact[p] ? result.exact_patches : result.fitted_patches);
+    result.rhino_rule_patches += limit.follows_sector_coefficients(p);
   }
   result.edges_used = edges;
   return result;

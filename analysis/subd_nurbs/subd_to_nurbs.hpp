@@ -28,13 +28,15 @@
 // deepest isolation); a patch's knots are those of the largest k among itself and its fitted neighbours. Where patches
 // meet at a point its control point is one value, bit for bit: the limit position there.
 //
-// Rules: Catmull-Clark as OpenSubdiv applies it (subd_limit_surface.hpp). Rhino's own SubD differs near
-// crease points (openNURBS weighs the smooth edges there by a sector coefficient) and around faces other
-// than quads: on the Rhino logo (corpus v7_rhino_logo_subd.3dm) the limit points Rhino caches agree with
-// these patches to 1e-9 relative at 644 points and differ by up to 0.062 mm at the points beside creases
-// and on faces of 3 and 5 sides.
+// Rules: Rhino's own (rhino_limit_surface.hpp): textbook Catmull-Clark but for the sector coefficients
+// openNURBS puts on smooth edges at crease, corner and dart points. A patch those shape is fitted (graded knots
+// with every span but the end ones halved, for the whole SubD) against the limit of the net refined 4 more
+// steps under Rhino's rules: proven where that is Rhino's limit, sampled in its squares of side 1/16 at the
+// tagged points. On the Rhino logo (corpus v7_rhino_logo_subd.3dm) every limit point Rhino caches is a patch
+// corner to 1e-9 relative, but at the points of faces of 3 and 5 sides, which that file's Rhino build
+// computed with an older rule (up to 0.014 mm off).
 //
-// Refuses (GeometryError(entity, reason)): what SubdLimitSurface refuses (non-manifold edges, faces not consistently
+// Refuses (GeometryError(entity, reason)): what RhinoLimitSurface refuses (non-manifold edges, faces not consistently
 // oriented, invalid nets), D <= 0, and a patch that stays above D at k = 10.
 #include <string>
 #include <vector>
@@ -48,7 +50,8 @@ struct SubdNurbs {
   std::vector<TrimmedSurface> patches;
   int edges_used = 0;  // edge numbers first_edge_number .. first_edge_number + edges_used - 1
   int exact_patches = 0, fitted_patches = 0;
-  int fitted_levels = 0;  // the largest k of the fitted patches' knots: 2k spans, the end ones 2^-k (0: none)
+  int rhino_rule_patches = 0;  // of the fitted ones, those Rhino's sector coefficients shape (see below)
+  int fitted_levels = 0;       // the largest k of the fitted patches' knots: 2k spans, the end ones 2^-k (0: none)
   // Distance of the fitted patches from the limit surface at equal (u, v), hence also a bound on the distance between
   // the two surfaces either way: proven everywhere but the squares of side 2^-10 at extraordinary features, sampled (5
   // x 5 points each) in those. Exact patches: 0 to rounding.
