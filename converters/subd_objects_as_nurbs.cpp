@@ -50,13 +50,18 @@ void add_subd_objects_as_nurbs(const std::vector<rhino::RhinoScene::SubdObject>&
       shape.geometry = std::move(patches.patches[k]);
       node->shapes.push_back(std::move(shape));
     }
-    std::string line = object.object_label + ": SubD as " + std::to_string(patches.exact_patches + patches.fitted_patches) +
-                       " NURBS patches, " + std::to_string(patches.exact_patches) + " exact bicubic";
+    std::string line = object.object_label + ": SubD as " +
+                       std::to_string(patches.exact_patches + patches.fitted_patches) + " NURBS patches, " +
+                       std::to_string(patches.exact_patches) + " exact bicubic";
     if (patches.fitted_patches > 0)
-      line += ", " + std::to_string(patches.fitted_patches) + " fitted near extraordinary points within " +
-              message_number(patches.fitted_bound) + " mm of the limit surface (a bound, but in squares of 1/1024 "
-              "of a patch at those points, where " + message_number(patches.fitted_sampled_at_features) +
-              " mm is sampled)";
+      line += ", " + std::to_string(patches.fitted_patches) + " fitted near extraordinary points" +
+              (patches.rhino_rule_patches > 0
+                   ? " (" + std::to_string(patches.rhino_rule_patches) + " beside Rhino's sector coefficients)"
+                   : std::string()) +
+              " within " + message_number(patches.fitted_bound) +
+              " mm of the limit surface (a bound, but in squares of 1/1024 of a patch at those points" +
+              (patches.rhino_rule_patches > 0 ? std::string(", 1/16 at tagged ones") : std::string()) + ", where " +
+              message_number(patches.fitted_sampled_at_features) + " mm is sampled)";
     out.notes.push_back(line);
   }
 }
