@@ -37,7 +37,7 @@ const expected = {
   NurbsSurface: [
     'field SFInt32 uDimension 0', 'field SFInt32 vDimension 0', 'field MFFloat uKnot []',
     'field MFFloat vKnot []', 'field SFInt32 uOrder 3', 'field SFInt32 vOrder 3',
-    'field MFVec3f controlPoint []', 'field MFFloat weight []', 'field SFInt32 uTessellation 0',
+    'exposedField MFVec3f controlPoint []', 'field MFFloat weight []', 'field SFInt32 uTessellation 0',
     'field SFInt32 vTessellation 0', 'field SFBool ccw TRUE', 'field SFBool solid TRUE',
   ],
   NurbsGroup: ['field MFNode children []', 'field SFFloat tessellationScale 1'],
@@ -125,7 +125,9 @@ const sandbox = {
 };
 function run(script, fields) {
   const messages = [];
-  const env = { ...sandbox, print: (m) => messages.push(String(m)), coord: {}, normal: {}, ...fields };
+  // NurbsSurface's Script reads its control points from the PROTO's Coordinate (control.point).
+  const control = { point: fields.controlPoint };
+  const env = { ...sandbox, print: (m) => messages.push(String(m)), coord: {}, normal: {}, control, ...fields };
   const names = Object.keys(env);
   const fn = new Function(...names, 'var coordIndex_changed = null;\n' + script + '\ninitialize();\nreturn coordIndex_changed;');
   const index = fn(...names.map((n) => env[n]));

@@ -22,6 +22,8 @@
 import fs from 'node:fs';
 import { PNG } from 'pngjs';
 
+import { readPng, silhouetteMask } from './silhouette_mask.mjs';
+
 function usage(msg) {
   if (msg) process.stderr.write(`compare_images: ${msg}\n`);
   process.stderr.write('usage: compare_images.mjs A.png B.png [--max-diff F] [--min-foreground F] [--tolerance T] [--diff-image OUT.png]\n');
@@ -48,14 +50,7 @@ for (let i = 0; i < args.length; ++i) {
 }
 if (files.length !== 2) usage('need exactly two images');
 
-function read(file) {
-  try {
-    return PNG.sync.read(fs.readFileSync(file));
-  } catch (e) {
-    process.stderr.write(`compare_images: cannot read ${file}: ${e.message}\n`);
-    process.exit(2);
-  }
-}
+const read = (file) => readPng(file);
 
 const [imgA, imgB] = files.map(read);
 if (imgA.width !== imgB.width || imgA.height !== imgB.height) {
@@ -64,34 +59,7 @@ if (imgA.width !== imgB.width || imgA.height !== imgB.height) {
 }
 const { width, height } = imgA;
 
-function backgroundOf(img) {
-  const counts = new Map();
-  const d = img.data;
-  const add = (x, y) => {
-    const o = 4 * (y * width + x);
-    const key = (d[o] << 24 >>> 0) + (d[o + 1] << 16) + (d[o + 2] << 8) + d[o + 3];
-    counts.set(key, (counts.get(key) || 0) + 1);
-  };
-  for (let x = 0; x < width; ++x) { add(x, 0); add(x, height - 1); }
-  for (let y = 1; y < height - 1; ++y) { add(0, y); add(width - 1, y); }
-  let best = 0, bestCount = -1;
-  for (const [k, c] of counts) if (c > bestCount) { best = k; bestCount = c; }
-  return [(best >>> 24) & 255, (best >>> 16) & 255, (best >>> 8) & 255, best & 255];
-}
-
-function mask(img) {
-  const bg = backgroundOf(img);
-  const d = img.data, m = new Uint8Array(width * height);
-  const tol = opt.tolerance;
-  let n = 0;
-  for (let i = 0, o = 0; i < m.length; ++i, o += 4) {
-    let fg;
-    if (bg[3] < 128) fg = d[o + 3] >= 128; // transparent background: opaque pixels
-    else fg = d[o + 3] >= 128 && (Math.abs(d[o] - bg[0]) > tol || Math.abs(d[o + 1] - bg[1]) > tol || Math.abs(d[o + 2] - bg[2]) > tol);
-    if (fg) { m[i] = 1; ++n; }
-  }
-  return { bg, m, fraction: n / m.length };
-}
+const mask = (img) => silhouetteMask(img, opt.tolerance);
 
 const A = mask(imgA), B = mask(imgB);
 let both = 0, either = 0, onlyA = 0, onlyB = 0;

@@ -77,7 +77,9 @@ export function runScript(script, fields, { bulk = true } = {}) {
     coord.point = new MFVec3f();
     normal.vector = new MFVec3f();
   }
-  const env = { MFVec3f, MFInt32, SFVec3f, print: (m) => messages.push(String(m)), coord, normal, ...fields };
+  // NurbsSurface's Script reads its control points from the PROTO's Coordinate node (control.point).
+  const control = { point: fields.controlPoint };
+  const env = { MFVec3f, MFInt32, SFVec3f, print: (m) => messages.push(String(m)), coord, normal, control, ...fields };
   const names = Object.keys(env);
   const fn = new Function(...names, 'var coordIndex_changed = null;\n' + script + '\nvar t0 = Date.now();\ninitialize();\nreturn [coordIndex_changed, (Date.now() - t0) / 1000];');
   const [index, seconds] = fn(...names.map((n) => env[n]));

@@ -4,7 +4,7 @@
 //
 //   render_xite.mjs IN OUT.png [--width 400] [--height 300] [--timeout SECONDS]
 //                   [--protos DIR] [--chromium PATH] [--ignore-errors]
-//                   [--background R,G,B] [--time]
+//                   [--background R,G,B] [--time] [--times T1,T2,...] [--allow-missing NAME,...]
 //
 // IN's folder is served read-only on an ephemeral port of 127.0.0.1, together with
 // X_ITE's dist folder, so relative URLs inside IN (Inline, EXTERNPROTO, textures) resolve
@@ -26,6 +26,14 @@
 // resolved: every EXTERNPROTO and Inline done) the script waits a few rendered frames,
 // then screenshots the <x3d-canvas> element.
 //
+// --times T1,T2,... (seconds, increasing) renders the scene at those scene times on a clock that
+// stands still unless moved (virtual_clock.mjs: time T is an instant at which every corpus cycle has
+// run T seconds), one picture each, OUT.png's name with ".t<i>" before the extension (OUT.t0.png ...);
+// the same times give the same pictures, run after run.
+// --allow-missing NAME,... lets a load go on when files of those names (e.g. textures and white_dune's
+// scripted PROTOs that a corpus file names but does not ship) are missing: their 404s, X_ITE's "Couldn't
+// load URL" for them and its image load warnings are not errors; any other missing file still is.
+//
 // Exit status 0 with OUT.png written; 1 with a one-line error on stderr when the scene
 // fails to load or the page reports an error (X_ITE console errors, X_ITE parser errors,
 // which it logs as warnings, and uncaught page errors are collected and printed); 2 on
@@ -38,10 +46,11 @@ import fs from 'node:fs';
 import path from 'node:path';
 
 import { XiteSession, defaultProtosDir, oneLine, requireXite } from './xite_page.mjs';
+import { setClockAndDraw, virtualClockInitScript } from './virtual_clock.mjs';
 
 function usage(msg) {
   if (msg) process.stderr.write(`render_xite: ${msg}\n`);
-  process.stderr.write('usage: render_xite.mjs IN OUT.png [--width 400] [--height 300] [--timeout SECONDS] [--protos DIR] [--chromium PATH] [--ignore-errors] [--background R,G,B] [--time]\n');
+  process.stderr.write('usage: render_xite.mjs IN OUT.png [--width 400] [--height 300] [--timeout SECONDS] [--protos DIR] [--chromium PATH] [--ignore-errors] [--background R,G,B] [--time] [--times T1,T2,...] [--allow-missing NAME,...]\n');
   process.exit(2);
 }
 
@@ -55,6 +64,8 @@ const opt = {
   ignoreErrors: false,
   background: null, // [r, g, b] in 0..1, or null for white
   time: false,
+  times: null, // scene times (s) on the virtual clock, or null for the real clock
+  allowMissing: [],
 };
 const positional = [];
 // "R,G,B" with components in 0..1, or in 0..255 when any exceeds 1.
@@ -77,6 +88,11 @@ function parseColour(text) {
     else if (arg === '--ignore-errors') opt.ignoreErrors = true;
     else if (arg === '--time') opt.time = true;
     else if (arg === '--background') opt.background = parseColour(value());
+    else if (arg === '--times') {
+      opt.times = value().split(',').map(Number);
+      if (opt.times.some((t, k) => !Number.isFinite(t) || t <= 0 || (k > 0 && t <= opt.times[k - 1])))
+        usage(`--times needs increasing positive seconds: ${a[i]}`);
+    } else if (arg === '--allow-missing') opt.allowMissing = value().split(',').filter(Boolean);
     else if (arg === '-h' || arg === '--help') usage();
     else if (arg.startsWith('--')) usage(`unknown option ${arg}`);
     else positional.push(arg);
@@ -97,6 +113,7 @@ const pageColour = opt.background
 const session = new XiteSession({
   xiteDist, sceneDir: path.dirname(inFile), protos: opt.protos, chromium: opt.chromium,
   width: opt.width, height: opt.height, colour: pageColour,
+  initScript: opt.times ? virtualClockInitScript : null,
 });
 await session.serve();
 
@@ -114,7 +131,7 @@ try {
   await session.launch(chromium);
   const page = session.page;
   const sceneURL = session.sceneURL(inFile);
-  const loaded = await page.evaluate(async ({ url, sky }) => {
+  const loaded = await page.evaluate(async ({ url, sky, virtualClock }) => {
     const canvas = document.getElementById('canvas');
     const X3D = window.X3D;
     if (!X3D) return { ok: false, error: 'X_ITE did not load' };
@@ -122,6 +139,7 @@ try {
     // Show the file's Viewpoint exactly: X_ITE's default "straighten horizon" would roll
     // a Viewpoint whose up direction is not +Y.
     browser.setBrowserOption('StraightenHorizon', false);
+    if (virtualClock) window.cadnurbsClock.attach(browser);
     const start = performance.now();
     try {
       await browser.loadURL(new X3D.MFString(url));
@@ -141,6 +159,8 @@ try {
         defaultBackgroundSet = true;
       }
     } catch { /* keep X_ITE's default */ }
+    // On the virtual clock no frame is drawn until the clock moves (setClockAndDraw below).
+    if (virtualClock) return { ok: true, rootNodes: browser.currentScene?.rootNodes.length ?? 0, loadSeconds };
     // Let scripts, EXTERNPROTO instances and geometry settle: a few rendered frames.
     await browser.nextFrame();
     const firstFrameSeconds = (performance.now() - start) / 1000;
@@ -148,24 +168,26 @@ try {
     await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
     const scene = browser.currentScene;
     return { ok: true, rootNodes: scene ? scene.rootNodes.length : 0, defaultBackgroundSet, loadSeconds, firstFrameSeconds };
-  }, { url: sceneURL, sky: opt.background ?? [1, 1, 1] });
+  }, { url: sceneURL, sky: opt.background ?? [1, 1, 1], virtualClock: opt.times !== null });
   if (loaded.ok && opt.time)
     process.stdout.write(`render_xite: time load ${loaded.loadSeconds.toFixed(3)} first-frame ${loaded.firstFrameSeconds.toFixed(3)}\n`);
 
   if (!loaded.ok) errors.unshift(loaded.error);
+  dropAllowedMissing();
   if (errors.length === 0 || (opt.ignoreErrors && loaded.ok)) {
     if (loaded.rootNodes === 0) errors.push('scene has no root nodes');
-    else {
-      fs.mkdirSync(path.dirname(outFile), { recursive: true });
-      const tmp = `${outFile}.tmp`;
-      await page.locator('#canvas').screenshot({ path: tmp, type: 'png', animations: 'disabled' });
-      fs.renameSync(tmp, outFile);
-    }
+    else if (opt.times) {
+      for (const [k, t] of opt.times.entries()) {
+        await setClockAndDraw(page, t);
+        await screenshot(page, timedName(outFile, k));
+      }
+    } else await screenshot(page, outFile);
   }
 } catch (e) {
   errors.push(oneLine(e?.message ?? e));
 }
 
+dropAllowedMissing();
 clearTimeout(deadline);
 await session.close();
 for (const w of warnings.slice(0, 20)) process.stderr.write(`render_xite: warning: ${w}\n`);
@@ -176,3 +198,32 @@ if (errors.length) {
   exitCode = opt.ignoreErrors && fs.existsSync(outFile) ? 0 : 1;
 }
 process.exit(exitCode);
+
+async function screenshot(page, file) {
+  fs.mkdirSync(path.dirname(file), { recursive: true });
+  const tmp = `${file}.tmp`;
+  await page.locator('#canvas').screenshot({ path: tmp, type: 'png', animations: 'disabled' });
+  fs.renameSync(tmp, file);
+}
+
+// OUT.png -> OUT.t<k>.png
+function timedName(file, k) {
+  const ext = path.extname(file);
+  return `${file.slice(0, file.length - ext.length)}.t${k}${ext}`;
+}
+
+// With --allow-missing: when every file the server could not find is one of the allowed names, the
+// messages about them (the browser's 404s, X_ITE's failed EXTERNPROTO URLs and image loads, which
+// name them or not) are not errors.
+function dropAllowedMissing() {
+  if (opt.allowMissing.length === 0) return;
+  const allowed = (name) => opt.allowMissing.includes(path.posix.basename(name));
+  if (!session.missingFiles().every(allowed)) return;
+  const namesAllowed = (text) => opt.allowMissing.some((name) => text.includes(name));
+  // (the http:// URLs such files are also listed under cannot resolve in the sandbox)
+  const generic = /^Failed to load resource: (the server responded with a status of 404|net::ERR_NAME_NOT_RESOLVED)|^Error: Not Found at /;
+  const keep = errors.filter((e) => !generic.test(e) && !namesAllowed(e));
+  errors.splice(0, errors.length, ...keep);
+  const keepWarnings = warnings.filter((w) => !(/^Error loading image/.test(w) && namesAllowed(w)));
+  warnings.splice(0, warnings.length, ...keepWarnings);
+}

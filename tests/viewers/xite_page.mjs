@@ -109,8 +109,9 @@ function fileBelow(root, urlPath) {
 
 export class XiteSession {
   // xiteDist: from requireXite; colour: a CSS colour for the page and the canvas.
-  constructor({ xiteDist, sceneDir, protos = defaultProtosDir, chromium, width = 400, height = 300, colour = '#ffffff' }) {
-    Object.assign(this, { xiteDist, sceneDir, protos, chromiumPath: chromium, width, height });
+  // initScript: optional { script, arg } run in the page before X_ITE loads (playwright's addInitScript).
+  constructor({ xiteDist, sceneDir, protos = defaultProtosDir, chromium, width = 400, height = 300, colour = '#ffffff', initScript = null }) {
+    Object.assign(this, { xiteDist, sceneDir, protos, chromiumPath: chromium, width, height, initScript });
     this.html = pageHtml(width, height, colour);
     this.served = [];
     this.errors = [];
@@ -192,6 +193,7 @@ export class XiteSession {
     });
     page.on('pageerror', (err) => this.errors.push(oneLine(`page error: ${err.message}`)));
     page.on('crash', () => this.errors.push('page crashed'));
+    if (this.initScript) await this.context.addInitScript(this.initScript.script, this.initScript.arg);
     await page.goto(`${this.origin}/`, { waitUntil: 'load' });
     this.page = page;
   }
