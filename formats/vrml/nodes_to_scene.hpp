@@ -9,18 +9,26 @@
 //   - Grouping nodes -> SceneNode (name from DEF): Transform, and the nodes placed like it (HAnimHumanoid,
 //     HAnimJoint, HAnimSite, CADPart, CADAssembly), with their transforms; Group, NurbsGroup, StaticGroup,
 //     Anchor, Billboard (as seen from its own axes), Collision, HAnimSegment, CADLayer, CADFace; Switch:
-//     its chosen child (whichChoice); LOD: its first, most detailed level; a CoordinateDeformer without a
-//     deformation (no control points) is a group. A NurbsGroup without DEF (as the writer makes it) gives
-//     its shapes to the enclosing node.
+//     its chosen child (whichChoice); LOD: its first, most detailed level; a CoordinateDeformer is a group
+//     whose volume (when it has control points) moves its children's coordinates (coordinate_deformer.hpp).
+//     A NurbsGroup without DEF (as the writer makes it) gives its shapes to the enclosing node.
+//   - PROTO instances are their bodies' first nodes with the instance's field values (proto_expansion.hpp),
+//     also for an EXTERNPROTO whose url names a local file that declares it.
+//   - Inline (and InlineLoadControl) of a local file: that file's scene, read the same way, as a node (named
+//     by the Inline's DEF) where the Inline stands (linked_files.hpp), in the including file's unit and
+//     control point convention; a file that cannot be read is a note naming it. `name_for_errors` is taken
+//     as the input's path for this: relative urls are resolved in its folder.
 //   - Shape -> Shape(s) (nodes_to_geometry.hpp). Material diffuseColor (else emissiveColor;
 //     PhysicalMaterial baseColor, UnlitMaterial emissiveColor) is the colour; an Appearance DEF'd
 //     "<A>_colour" or "<A>_line_colour" for an enclosing node DEF'd A gives A's colour, which the shape
 //     then inherits.
 //   - WorldInfo, NavigationInfo, Viewpoint: read, no note (the writers make their own).
 //   - Everything else has no place in a Scene and is left out with one note per kind, counted:
-//     animation and interaction (interpolators, sensors, Script, ROUTE), PROTO instances (cadnurbs does
-//     not expand PROTOs), geometry without a form here (Text, Cylinder, PointSet...), textures, Inline
-//     (another file), lights and environment, a CoordinateDeformer that deforms (with its children).
+//     animation and interaction (interpolators, sensors, Script, ROUTE, also inside PROTO bodies), instances
+//     of an EXTERNPROTO no local file declares, geometry without a form here (Text, Cylinder, PointSet...),
+//     textures, an Inline whose url is not a local file (or that would include itself, or lies more than
+//     kMaxLinkDepth files deep: named by its url), lights and environment, a CoordinateDeformer whose
+//     volume is invalid (with its children), a deformer's inputCoord/outputCoord.
 //   - A USE'd group or shape is copied; more than a million copies in all is refused.
 #include <string>
 #include <vector>
