@@ -9,7 +9,8 @@
 //   TCODE_LEGACY_SHL -> shell stuff, an ON_Brep (legacy_brep.hpp)
 //   TCODE_LEGACY_FAC -> face stuff, a one-face ON_Brep
 //   TCODE_LEGACY_CRV -> curve stuff, a curve (legacy_nurbs.hpp)
-// Meshes (TCODE_MESH_OBJECT), points (TCODE_RH_POINT) and annotations are objects cadnurbs does not read.
+//   TCODE_MESH_OBJECT -> TCODE_COMPRESSED_MESH_GEOMETRY, a mesh (legacy_mesh.hpp); its attributes follow it
+// Points (TCODE_RH_POINT) and annotations are objects cadnurbs does not read.
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -20,7 +21,7 @@
 
 namespace cadnurbs::rhino {
 
-// The class a V1 object chunk reads as ("ON_Brep", "ON_NurbsCurve", "V1 mesh", ...), or "" when
+// The class a V1 object chunk reads as ("ON_Brep", "ON_NurbsCurve", "ON_Mesh", "V1 point", ...), or "" when
 // `typecode` is not an object chunk.
 std::string v1_object_class(std::uint32_t typecode);
 

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "formats/3dm/compressed_buffer.hpp"
+#include "formats/3dm/mesh_faces.hpp"
 #include "formats/3dm/typecodes.hpp"
 
 namespace cadnurbs::rhino {
@@ -18,45 +19,6 @@ void skip_flagged_chunk(ArchiveReader& reader) {
     reader.begin_chunk(tcode::kAnonymousChunk);
     reader.end_chunk();
   }
-}
-
-// Quads have four distinct corners; a triangle repeats its third (vi[2] == vi[3]).
-std::vector<std::array<int, 3>> read_faces(ArchiveReader& reader, std::size_t face_count, std::size_t vertex_count) {
-  const std::int32_t index_size = reader.i32();
-  if (face_count == 0) return {};
-  if (index_size != 1 && index_size != 2 && index_size != 4)
-    refuse(reader, "face index size " + std::to_string(index_size) + " is not 1, 2 or 4");
-  const std::size_t face_bytes = 4 * static_cast<std::size_t>(index_size);
-  if (face_count > reader.bytes_left() / face_bytes)
-    refuse(reader, std::to_string(face_count) + " faces need " + std::to_string(face_count * face_bytes) + " bytes, " +
-                       std::to_string(reader.bytes_left()) + " left");
-  std::vector<std::array<int, 3>> triangles;
-  triangles.reserve(face_count * 2);
-  for (std::size_t f = 0; f < face_count; ++f) {
-    std::uint32_t vi[4];
-    for (auto& v : vi) v = index_size == 1 ? reader.u8() : index_size == 2 ? reader.u16() : reader.u32();
-    for (const std::uint32_t v : vi)
-      if (v >= vertex_count)
-        refuse(reader, "face " + std::to_string(f) + " has vertex index " + std::to_string(v) + ", the mesh has " +
-                           std::to_string(vertex_count) + " vertices");
-    const auto i = [&](int k) { return static_cast<int>(vi[k]); };
-    triangles.push_back({i(0), i(1), i(2)});
-    if (vi[2] != vi[3]) triangles.push_back({i(0), i(2), i(3)});
-  }
-  return triangles;
-}
-
-// Rhino's normals are per vertex; the mesh's are per triangle corner. Unusable ones (zero, not finite)
-// drop them all rather than give a writer a normal it cannot normalise.
-std::vector<Eigen::Vector3d> corner_normals(const std::vector<Eigen::Vector3d>& vertex_normals,
-                                            const std::vector<std::array<int, 3>>& triangles) {
-  for (const auto& n : vertex_normals)
-    if (!n.allFinite() || n.squaredNorm() == 0) return {};
-  std::vector<Eigen::Vector3d> out;
-  out.reserve(3 * triangles.size());
-  for (const auto& t : triangles)
-    for (const int v : t) out.push_back(vertex_normals[static_cast<std::size_t>(v)]);
-  return out;
 }
 
 std::vector<Eigen::Vector3d> float_points(std::string_view bytes) {
@@ -125,7 +87,7 @@ TriangleMesh read_mesh(ArchiveReader& reader) {
   const auto vertex_count = static_cast<std::size_t>(vcount);
 
   TriangleMesh mesh;
-  mesh.triangles = read_faces(reader, static_cast<std::size_t>(fcount), vertex_count);
+  mesh.triangles = read_mesh_faces(reader, static_cast<std::size_t>(fcount), vertex_count, reader.i32(), "ON_Mesh");
   if (major == 1) {
     // Plain arrays (count, then x y z floats): vertices, then normals (none or one per vertex); texture
     // coordinates, curvatures and colours follow and are left unread.
@@ -134,7 +96,7 @@ TriangleMesh read_mesh(ArchiveReader& reader) {
     mesh.positions = float_points(reader.raw(n * 12));
     const std::size_t normal_count = reader.count(12);
     const std::vector<Eigen::Vector3d> normals = float_points(reader.raw(normal_count * 12));
-    if (normal_count == vertex_count) mesh.corner_normals = corner_normals(normals, mesh.triangles);
+    if (normal_count == vertex_count) mesh.corner_normals = vertex_to_corner_normals(normals, mesh.triangles);
     return mesh;
   }
   if (vertex_count > 0) {
@@ -142,7 +104,7 @@ TriangleMesh read_mesh(ArchiveReader& reader) {
     if (mesh.positions.size() != vertex_count) refuse(reader, "vertex buffer missing");
     const std::vector<Eigen::Vector3d> normals =
         float_points(read_compressed_buffer(reader, vertex_count * 12, "ON_Mesh normal buffer"));
-    if (!normals.empty()) mesh.corner_normals = corner_normals(normals, mesh.triangles);
+    if (!normals.empty()) mesh.corner_normals = vertex_to_corner_normals(normals, mesh.triangles);
     for (int k = 0; k < 3; ++k) skip_compressed_buffer(reader);  // texture coordinates, curvatures, colours
   }
   if (minor >= 2) reader.i32();  // packed texture rotation

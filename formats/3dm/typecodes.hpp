@@ -115,7 +115,8 @@ inline constexpr std::uint32_t kLegacyTrimStuff = kLegacyTrim | kLegacyStuff;
 inline constexpr std::uint32_t kLegacySurfaceStuff = kLegacySurface | kLegacyStuff;
 inline constexpr std::uint32_t kLegacyCurveStuff = kLegacyCurve | kLegacyStuff;
 inline constexpr std::uint32_t kLegacySplineStuff = kLegacySpline | kLegacyStuff;
-inline constexpr std::uint32_t kMeshObject = kGeometry | 0x0015u;  // a V1 mesh (not read)
+inline constexpr std::uint32_t kMeshObject = kGeometry | 0x0015u;              // a V1 mesh
+inline constexpr std::uint32_t kCompressedMeshGeometry = kGeometry | 0x0017u;  // its data
 inline constexpr std::uint32_t kRhPoint = kGeometry | 0x0001u;     // a V1 point (not read)
 // V1 object attributes (chunks in front of an object's stuff chunk) and layers.
 inline constexpr std::uint32_t kName = kInterface | 0x0001u;              // int32 length, that many chars

@@ -127,7 +127,8 @@ TEST(LegacyV1File, ObjectChunksAreKnownByTheirTypecode) {
   EXPECT_EQ(v1_object_class(tcode::kLegacyShell), "ON_Brep");
   EXPECT_EQ(v1_object_class(tcode::kLegacyFace), "ON_Brep");
   EXPECT_EQ(v1_object_class(tcode::kLegacyCurve), "ON_NurbsCurve");
-  EXPECT_EQ(v1_object_class(tcode::kMeshObject), "V1 mesh");
+  EXPECT_EQ(v1_object_class(tcode::kMeshObject), "ON_Mesh");  // read as openNURBS reads it
+  EXPECT_EQ(v1_object_class(tcode::kRhPoint), "V1 point");
   EXPECT_EQ(v1_object_class(tcode::kV1Layer), "");
 }
 
