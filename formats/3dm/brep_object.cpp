@@ -7,10 +7,11 @@
 #include <variant>
 
 #include "core/geometry_error.hpp"
-#include "core/loop_closure.hpp"
 #include "core/split_curve.hpp"
+#include "formats/3dm/brep_v2_layout.hpp"
 #include "formats/3dm/curve_objects.hpp"
 #include "formats/3dm/flipped_face.hpp"
+#include "formats/3dm/oriented_loop.hpp"
 #include "formats/3dm/rhino_object.hpp"
 #include "formats/3dm/surface_objects.hpp"
 #include "formats/3dm/typecodes.hpp"
@@ -20,7 +21,7 @@
 // object), then vertices, edges, trims, loops and faces (each an anonymous chunk, version 1.x, a count
 // and the records), the bounding box, and from 3.1 on render/analysis meshes, 3.2 m_is_solid, 3.3 region
 // topology. Only what a trimmed surface needs is kept; everything after the faces is left to the class
-// data chunk's end.
+// data chunk's end. Chunk version 2.x (Rhino 2) is brep_v2_layout.hpp's.
 
 namespace cadnurbs::rhino {
 
@@ -355,14 +356,11 @@ TrimmedSurface build_face(int fi, const BrepFace& face, const std::vector<CurveS
       tolerance = std::max(tolerance, trim.tolerance);
     }
     if (built.segments.empty()) throw GeometryError(loop_name, "has no trims");
-    // Consecutive trims meet within the trims' own tolerance; close what is left by moving the ends to
-    // their midpoint. A larger gap means the loop is not what the file says.
-    close_loop_gaps(built, tolerance, loop.trims, loop_name);
-    // Rhino's rule is the VRML/X3D one (outer counter-clockwise, inner clockwise), in the surface's own
-    // (u, v); the loop type decides, the signed area only checks it.
-    const double area = loop_signed_area(built);
-    if ((loop.type == kLoopOuter && area < 0) || (loop.type == kLoopInner && area > 0)) built = reversed(built);
-    out.loops.push_back(std::move(built));
+    // Consecutive trims meet within the trims' own tolerance.
+    const LoopRole role = loop.type == kLoopOuter   ? LoopRole::outer
+                          : loop.type == kLoopInner ? LoopRole::inner
+                                                    : LoopRole::other;
+    out.loops.push_back(oriented_loop(std::move(built), role, tolerance, loop.trims, loop_name));
   }
   if (face.reversed) out = flipped(out);
   validate(out, entity, 1e-9 * size);
@@ -373,9 +371,8 @@ TrimmedSurface build_face(int fi, const BrepFace& face, const std::vector<CurveS
 
 RhinoBrep read_brep(ArchiveReader& reader) {
   const auto [major, minor] = reader.chunk_version();
-  if (major != 3)
-    reader.fail("Brep chunk version " + std::to_string(major) +
-                (major == 2 ? " (Rhino 2's legacy trimmed-surface layout) is not read" : " is unknown"));
+  if (major == 2) return read_brep_v2_layout(reader);
+  if (major != 3) reader.fail("Brep chunk version " + std::to_string(major) + " is unknown");
   const auto curves2d = read_curves(reader);
   reader.begin_chunk(tcode::kAnonymousChunk);  // 3D curves: the edges' geometry comes from the faces
   reader.end_chunk();
