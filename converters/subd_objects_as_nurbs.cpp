@@ -1,6 +1,7 @@
 #include "converters/subd_objects_as_nurbs.hpp"
 
 #include "analysis/subd_nurbs/subd_to_nurbs.hpp"
+#include "core/find_scene_node.hpp"
 #include "core/geometry_error.hpp"
 #include "core/number_format.hpp"
 
@@ -9,13 +10,6 @@ namespace cadnurbs {
 namespace {
 
 constexpr double kDefaultShareOfDiagonal = 1e-4;
-
-SceneNode* node_of(SceneNode& node, const std::string& source_entity) {
-  if (node.source_entity == source_entity) return &node;
-  for (auto& child : node.children)
-    if (SceneNode* found = node_of(child, source_entity)) return found;
-  return nullptr;
-}
 
 double box_diagonal(const SubdControlNet& net) {
   Eigen::AlignedBox3d box;
@@ -28,7 +22,7 @@ double box_diagonal(const SubdControlNet& net) {
 void add_subd_objects_as_nurbs(const std::vector<rhino::RhinoScene::SubdObject>& objects, double deviation,
                                BrepTranslation& out) {
   for (const auto& object : objects) {
-    SceneNode* node = node_of(out.scene.root, object.source_entity);
+    SceneNode* node = find_scene_node(out.scene.root, object.source_entity);
     const double d = deviation > 0 ? deviation : kDefaultShareOfDiagonal * box_diagonal(object.net);
     if (!node || !(d > 0)) {
       out.repairs.push_back(object.object_label + ": SubD left out: " + (node ? "all its points coincide" : "no node"));

@@ -11,19 +11,13 @@
 #include "converters/file_formats.hpp"
 #include "converters/subd_objects_as_nurbs.hpp"
 #include "core/bounding_box.hpp"
+#include "core/find_scene_node.hpp"
 #include "formats/3dm/rhino_scene.hpp"
 
 namespace cadnurbs {
 namespace {
 
 const std::string kCorpus = std::string(CADNURBS_SHARED_DIR) + "/corpus/3dm/";
-
-const SceneNode* node_of(const SceneNode& node, const std::string& source_entity) {
-  if (node.source_entity == source_entity) return &node;
-  for (const auto& child : node.children)
-    if (const SceneNode* found = node_of(child, source_entity)) return found;
-  return nullptr;
-}
 
 // Rhino caches the limit surface's point at every control point of the v7 logo (774 of them). Our patch
 // corners are the limit positions of the net's points under Rhino's rules, sector coefficients beside
@@ -41,7 +35,7 @@ TEST(SubdObjects, RhinosCachedLimitPointsAreCornersOfThePatches) {
   size_t checked = 0, on_a_corner = 0;
   double worst = 0;
   for (const auto& object : rhino.subd_objects) {
-    const SceneNode* node = node_of(read.scene.root, object.source_entity);
+    const SceneNode* node = find_scene_node(read.scene.root, object.source_entity);
     ASSERT_NE(node, nullptr) << object.object_label;
     std::vector<Eigen::Vector3d> corners;
     for (const auto& shape : node->shapes) {
