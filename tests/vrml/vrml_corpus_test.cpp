@@ -128,7 +128,7 @@ TEST(VrmlCorpus, WhiteDuneFishIsReadAtTheFirstFrameOfItsAnimation) {
                             "3 CoordinateInterpolator routed to NurbsSurface.controlPoint: taken at the first key of its looping animation (fraction 0)",
                             "3 CoordinateInterpolator left out: animation and interaction are not converted: the scene is taken at rest",
                             "3 TimeSensor left out: animation and interaction are not converted: the scene is taken at rest",
-                            "1 CurveAnimation (PROTO) left out: PROTO instances are not expanded",
+                            "1 CurveAnimation (PROTO) left out: its EXTERNPROTO's urls name no local file that declares it: not expanded",
                             "9 ROUTE left out: animation and interaction are not converted: the scene is taken at rest"}));
 }
 
@@ -145,7 +145,7 @@ TEST(VrmlCorpus, WhiteDuneTestallReadsEveryAmendmentNode) {
   EXPECT_EQ(c.control_points, 5 + 16 + 16);
   EXPECT_EQ(read.notes, (std::vector<std::string>{
                             "1 NurbsPositionInterpolator left out: animation and interaction are not converted: the scene is taken at rest",
-                            "1 InlineLoadControl left out: the url is another file, not followed"}));
+                            "1 InlineLoadControl \"NurbsSurface_example.wrl\" left out: not a local file: not followed"}));
 }
 
 TEST(VrmlCorpus, WhiteDuneRobotsAreReadWhole) {
@@ -155,7 +155,7 @@ TEST(VrmlCorpus, WhiteDuneRobotsAreReadWhole) {
   EXPECT_EQ(count_entities(jme2.scene).surfaces, 29);
   EXPECT_TRUE(has_note(jme2, "4 CoordinateInterpolator routed to Coordinate.point: taken at the first key of its looping animation (fraction 0)"));
   EXPECT_TRUE(has_note(jme2, "3 Text left out: geometry without a NURBS or mesh form in cadnurbs"));
-  EXPECT_TRUE(has_note(jme2, "1 SuperShape (PROTO) left out: PROTO instances are not expanded"));
+  EXPECT_TRUE(has_note(jme2, "1 SuperShape (PROTO) left out: its EXTERNPROTO's urls name no local file that declares it: not expanded"));
   EXPECT_TRUE(has_note(jme2, "40 ROUTE left out: animation and interaction are not converted: the scene is taken at rest"));
   // robot_opengl.x3dv (HAnim, Switches, Scripts): 27 NurbsPatchSurface and 11 Spheres in the text; 4
   // NurbsPatchSurface lie under the Transform of line 12540, scaled 0 0 0 (the animation grows it):
