@@ -16,7 +16,13 @@
 //
 // setClockAndDraw() draws `frames` frames at T - (frames - 1) ms ... T, so the last frame is exactly at
 // T and the ones before let events through PROTO Scripts settle. Times must grow from one call to the
-// next.
+// next (equal times draw more frames at the same instant).
+//
+// hold(), once the load is done, stops the frames nobody asked for: X_ITE keeps drawing frames on
+// requestAnimationFrame while events are pending, and a scene whose ROUTEs form a loop (robot_opengl's
+// ProximitySensor moving its own parent Transform) has events pending in every frame, so without it the
+// number of frames between two pictures, and the loop's state in the picture, would follow the wall
+// clock. Held, the loop's state is a function of the frames drawn during the load and the frames asked for.
 
 // An instant (s since the epoch) at which every cycle of the corpus files starts: 1,700,001,870 =
 // 3570 x 476191 is a multiple of 10, 3, 2, 1, 0.85 and 0.56 s. Scene time t is kClockOrigin + t.
@@ -28,14 +34,26 @@ export const virtualClockInitScript = {
     let nowMs = originSeconds * 1000;
     Date.now = () => nowMs;
     window.cadnurbsClock = {
-      set: (seconds) => { nowMs = seconds * 1000; },
+      set: (seconds) => {
+        nowMs = seconds * 1000;
+      },
+      // Frames the test asked for and X_ITE has not drawn yet; null: every frame is drawn (the load).
+      framesAllowed: null,
       attach: (browser) => {
         browser.setBrowserOption('MaximumFrameRate', 1e6);
         const advanceTime = browser.advanceTime;
-        browser.advanceTime = function () {
+        const clock = window.cadnurbsClock;
+        browser.advanceTime = function() {
           advanceTime.call(this);
+          if (clock.framesAllowed === null) return true;
+          if (clock.framesAllowed === 0) return false;
+          --clock.framesAllowed;
           return true;
         };
+      },
+      // After the load: from now on X_ITE draws only the frames setClockAndDraw asks for.
+      hold: () => {
+        window.cadnurbsClock.framesAllowed = 0;
       },
     };
   },
@@ -44,11 +62,12 @@ export const virtualClockInitScript = {
 
 // In the page: draws `frames` frames ending at scene time t (seconds after kClockOrigin).
 export async function setClockAndDraw(page, t, frames = 3) {
-  await page.evaluate(async ({ at, frames }) => {
+  await page.evaluate(async ({at, frames}) => {
     const browser = X3D.getBrowser(document.getElementById('canvas'));
     for (let i = frames - 1; i >= 0; --i) {
       window.cadnurbsClock.set(at - i * 1e-3);
+      if (window.cadnurbsClock.framesAllowed !== null) window.cadnurbsClock.framesAllowed = 1;
       await browser.nextFrame();
     }
-  }, { at: kClockOrigin + t, frames });
+  }, {at: kClockOrigin + t, frames});
 }
