@@ -159,11 +159,15 @@ class TreeReader {
   // True when one of the product's representations holds more than placements (solids, shells, ...).
   bool has_geometry_items(const StepProduct& product) const {
     const TypeId placement = c_.types.axis2_placement_3d;
-    for (EntityId representation : product.representations) {
-      const part21::Value items = m_.parameter(m_.records(representation)[0], 1);
-      for (std::size_t k = 0; k < items.size(); ++k)
-        if (!c_.is(items.item(k).reference(), placement)) return true;
-    }
+    // An item that is not a reference (a broken file) is refused naming the representation; found by fuzz_long.
+    for (EntityId representation : product.representations)
+      if (reading(c_, representation, [&] {
+            const part21::Value items = m_.parameter(m_.records(representation)[0], 1);
+            for (std::size_t k = 0; k < items.size(); ++k)
+              if (!c_.is(items.item(k).reference(), placement)) return true;
+            return false;
+          }))
+        return true;
     return false;
   }
 
