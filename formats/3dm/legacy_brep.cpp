@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "core/geometry_error.hpp"
-#include "core/loop_closure.hpp"
 #include "formats/3dm/curve_objects.hpp"
 #include "formats/3dm/flipped_face.hpp"
 #include "formats/3dm/legacy_nurbs.hpp"
 #include "formats/3dm/object_checks.hpp"
+#include "formats/3dm/oriented_loop.hpp"
 #include "formats/3dm/typecodes.hpp"
 
 namespace cadnurbs::rhino {
@@ -184,11 +184,9 @@ TrimmedSurface build_face(const LegacyBrep& brep, std::size_t fi) {
     }
     std::vector<int> trim_numbers(built.segments.size());
     std::iota(trim_numbers.begin(), trim_numbers.end(), 1);
-    close_loop_gaps(built, tolerance, trim_numbers, loop_name);
-    // Outer loops counter-clockwise, holes clockwise in the surface's own (u, v), as in later Breps.
-    const double area = loop_signed_area(built);
-    if ((loop.type == 0 && area < 0) || (loop.type == 1 && area > 0)) built = reversed(built);
-    out.loops.push_back(std::move(built));
+    // Rhino 1's loop types: 0 outer, 1 inner, -1 slit.
+    const LoopRole role = loop.type == 0 ? LoopRole::outer : loop.type == 1 ? LoopRole::inner : LoopRole::other;
+    out.loops.push_back(oriented_loop(std::move(built), role, tolerance, trim_numbers, loop_name));
   }
   if (face.flipped) out = flipped(out);
   validate(out, entity, 1e-9 * size);
