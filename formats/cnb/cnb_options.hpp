@@ -1,5 +1,8 @@
 #pragma once
 // What the .cnb writer is asked for: the largest deviation of the decoded geometry, and how to spend it.
+#include <algorithm>
+#include <cstddef>
+
 namespace cadnurbs {
 
 struct CnbOptions {
@@ -9,6 +12,11 @@ struct CnbOptions {
   // The part of D that trimming curves may use (their quantisation in (u,v)); control points and mesh
   // vertices get the rest. In (0, 1).
   double trim_share = 0.4;
+  // How far the scene's triangle and polygon meshes already lie from the exact part they stand for (a
+  // certified tessellation's bound, world units; 0 for meshes that are the part). Meshes are quantised
+  // like control points, so their share of the bound is this plus the vertices' move; the caller keeps
+  // it within trim_share·D.
+  double mesh_deviation = 0.0;
   // The entropy stage: the smaller of deflate and the adaptive arithmetic coder, or one of them.
   enum class Coder { smallest, deflate, arithmetic } coder = Coder::smallest;
 };
@@ -20,7 +28,8 @@ struct CnbWriteReport {
   // Largest world move, over faces, caused by the trims' own grid plus (faces with quantised weights)
   // the weights' rounding.
   double trim_bound = 0;
-  double deviation_bound() const { return point_bound + trim_bound; }
+  double mesh_bound = 0;  // options.mesh_deviation when the scene holds a mesh, else 0
+  double deviation_bound() const { return point_bound + std::max(trim_bound, mesh_bound); }
   size_t payload_bytes = 0;     // decoded payload
   size_t deflate_bytes = 0;     // the payload deflated (0 when not tried)
   size_t arithmetic_bytes = 0;  // the payload arithmetic-coded (0 when not tried)

@@ -14,6 +14,8 @@ void check(const CnbOptions& o) {
   if (!(o.max_deviation > 0) || !std::isfinite(o.max_deviation))
     throw std::invalid_argument("cnb: the maximum deviation must be positive and finite");
   if (!(o.trim_share > 0 && o.trim_share < 1)) throw std::invalid_argument("cnb: trim_share must lie in (0, 1)");
+  if (!(o.mesh_deviation >= 0 && o.mesh_deviation <= o.trim_share * o.max_deviation))
+    throw std::invalid_argument("cnb: mesh_deviation must lie in [0, trim_share * max_deviation]");
 }
 }  // namespace
 

@@ -54,8 +54,10 @@ struct SceneEncoder {
       write_curve(w, *c, q, st);
     } else if (const auto* m = std::get_if<TriangleMesh>(&g)) {
       write_triangle_mesh(w, *m, q);
+      report.mesh_bound = options.mesh_deviation;
     } else {
       write_polygon_mesh(w, std::get<PolygonMesh>(g), q);
+      report.mesh_bound = options.mesh_deviation;
     }
   }
 
