@@ -4,6 +4,7 @@
 
 #include "analysis/tessellation/tessellate_uniform.hpp"
 #include "converters/arguments.hpp"
+#include "converters/cnb_coding.hpp"
 #include "core/bounding_box.hpp"
 #include "core/geometry_error.hpp"
 #include "core/number_format.hpp"
@@ -204,7 +205,15 @@ ConversionResult convert_scene(const ConversionRequest& request, const LoadedInp
       throw FileError(request.input + ": no geometry to write: its " + std::to_string(curves) +
                       " curves have no place in " + file_extension(request.output));
   }
-  write_scene(request.output, written, options);
+  if (quantises_nurbs(format) && !mesh) {  // .cnb: write_as_cnb's coding, with its report for the log
+    CnbCoding coding = cnb_coding(written, options.quantisation_budget);
+    tell(log.coded, coding.choice);
+    result.deviation_basis += meshed_bodies_basis(coding.choice);
+    write_file_atomically(request.output, coding.bytes);
+    written = std::move(coding.scene);
+  } else {
+    write_scene(request.output, written, options);
+  }
   result.counts = count_entities(written);
   tell(log.written, written, result);
   return result;

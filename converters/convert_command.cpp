@@ -204,6 +204,12 @@ int run_convert(const std::vector<std::string>& args, const CommandContext& cont
     std::cerr << in << ": " << curves << " NURBS curve" << (curves == 1 ? "" : "s") << " left out: "
               << upper_extension(out) << " holds triangles only\n";
   };
+  log.coded = [&](const CodingChoiceReport& r) {
+    std::cout << out << ": " << r.bodies_meshed << " of " << r.bodies << " bodies (" << r.faces_meshed << " faces, "
+              << r.polygons_meshed << " polygons) written as certified meshes within "
+              << number_text(r.certified_deviation, 3) << " " << unit_name << ", " << r.bytes()
+              << " bytes (NURBS as they are: " << r.as_is_bytes << ")\n";
+  };
   const ConversionResult result = convert_loaded(request, input, log);
   if (result.scene_graph) {
     const auto& g = *result.scene_graph;

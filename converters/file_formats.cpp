@@ -5,6 +5,7 @@
 #include "report/smallest_compressed_mesh.hpp"
 #include "analysis/tessellation/plan_tessellation_hints.hpp"
 #include "analysis/mesh/weld_exact.hpp"
+#include "converters/cnb_coding.hpp"
 #include "converters/subd_objects_as_nurbs.hpp"
 #include "converters/walled_read.hpp"
 #include "core/bounding_box.hpp"
@@ -13,7 +14,6 @@
 #include "formats/3dm/rhino_scene.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/cnb/cnb_reader.hpp"
-#include "formats/cnb/cnb_writer.hpp"
 #include "formats/draco/draco_mesh_codec.hpp"
 #include "formats/gltf/glb_writer.hpp"
 #include "formats/iges/iges_reader.hpp"
@@ -129,14 +129,13 @@ void write_as_obj(const std::string& path, const Scene& scene, const SceneWriteO
   write_obj(path, flatten_meshes(scene, path), "cadnurbs " + scene.root.name);
 }
 
-// .cnb: quantised within the budget (the deviation asked for); without one, within 1e-6 of the diagonal,
-// the precision the text writers keep.
+// .cnb: each body coded the cheapest way (NURBS or certified mesh) within the budget (the deviation asked
+// for); without one, within 1e-6 of the diagonal, the precision the text writers keep.
 void write_as_cnb(const std::string& path, const Scene& scene, const SceneWriteOptions& options) {
-  CnbOptions cnb;
   const auto box = scene_bounding_box(scene);
-  cnb.max_deviation = options.quantisation_budget > 0 ? options.quantisation_budget
-                                                      : 1e-6 * (box.isEmpty() ? 1.0 : box.diagonal().norm());
-  write_file_atomically(path, write_cnb(scene, cnb));
+  const double budget = options.quantisation_budget > 0 ? options.quantisation_budget
+                                                        : 1e-6 * (box.isEmpty() ? 1.0 : box.diagonal().norm());
+  write_file_atomically(path, cnb_coding(scene, budget).bytes);
 }
 
 // The quantisation resolutions a writer tries, coarsest first, stopping at the first within the budget.

@@ -19,6 +19,7 @@
 #include "analysis/mesh/largest_corner_move.hpp"
 #include "analysis/mesh/scene_triangles.hpp"
 #include "analysis/mesh/weld_exact.hpp"
+#include "converters/cnb_coding.hpp"
 #include "converters/file_formats.hpp"
 #include "converters/subdivision_fit_measurement.hpp"
 #include "converters/conversion.hpp"
@@ -29,7 +30,6 @@
 #include "core/number_format.hpp"
 #include "core/world_scale.hpp"
 #include "formats/cnb/cnb_reader.hpp"
-#include "formats/cnb/cnb_writer.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/common/gzip.hpp"
 #include "formats/draco/draco_mesh_codec.hpp"
@@ -194,16 +194,16 @@ RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, c
   return f;
 }
 
-// Our binary NURBS (.cnb) of the compact form (moved by at most `tolerance`) quantised within D, as
-// `convert --deviation D` writes it, read back. The deviation is the writer's bound (formats/cnb/
-// cnb_quantisation.hpp: control points, trims and weights) plus the compact form's.
+// Our binary NURBS (.cnb) of the compact form (moved by at most `tolerance`) within D, each body coded the
+// cheapest way (converters/cnb_coding: NURBS or certified mesh), as `convert --deviation D` writes it,
+// read back. The deviation is the writer's bound (formats/cnb/cnb_quantisation.hpp: control points, trims
+// and weights, and the meshes' certificate) plus the compact form's.
 void add_compact_binary(PartRecord& record, const Scene& compact, double tolerance, const Folder& folder,
                         const std::string& stem) {
   const fs::path path = folder.file(stem + "-compact", ".cnb");
-  CnbOptions options;
-  options.max_deviation = record.deviation;
-  CnbWriteReport written;
-  write_file_atomically(path.string(), write_cnb(compact, options, &written));
+  const CnbCoding coding = cnb_coding(compact, record.deviation);
+  const CnbWriteReport& written = coding.written;
+  write_file_atomically(path.string(), coding.bytes);
   RepresentationFigures f{"cnb", "cadnurbs binary NURBS (.cnb) within D", RepresentationKind::nurbs, 0, 0, 0, 0, 0, ""};
   const Scene decoded = read_cnb(measure_bytes(path, f), path.string());
   const NurbsStorage storage = nurbs_storage(decoded);
@@ -212,7 +212,7 @@ void add_compact_binary(PartRecord& record, const Scene& compact, double toleran
   f.deviation = written.deviation_bound() + tolerance;
   f.deviation_kind = DeviationKind::bound;
   f.deviation_basis = "bound: the quantisation's " + report_number(written.deviation_bound()) +
-                      " plus the written precision of the compact form";
+                      " plus the written precision of the compact form" + meshed_bodies_basis(coding.choice);
   record.representations.push_back(f);
 }
 
@@ -300,9 +300,7 @@ void add_curve(PartRecord& record, const BrepTranslation& loaded, const Scene& s
     measure_bytes(path, f);
     const MeshStorage storage = mesh_storage(read_back_mesh(path));
     record.curve.push_back({"wrl-mesh", d, f.bytes, f.gzip_bytes, storage.indexed_floats});
-    CnbOptions cnb;
-    cnb.max_deviation = d;
-    const long cnb_bytes = static_cast<long>(write_cnb(compact, cnb).size());
+    const long cnb_bytes = static_cast<long>(cnb_coding(compact, d).bytes.size());
     record.curve.push_back({"cnb", d, cnb_bytes, cnb_bytes, 0});
     if (meshed.report.triangles > kCurveEncodingLimit) continue;
     try {

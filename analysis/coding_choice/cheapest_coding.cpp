@@ -1,0 +1,112 @@
+#include "analysis/coding_choice/cheapest_coding.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "analysis/coding_choice/certified_body_mesh.hpp"
+#include "analysis/coding_choice/scene_bodies.hpp"
+#include "core/geometry_error.hpp"
+
+namespace cadnurbs {
+
+namespace {
+
+// A whole candidate: the scene with the bodies `meshed` says replaced by their meshes, and its tally.
+struct Candidate {
+  Scene scene;
+  int bodies_meshed = 0, faces_meshed = 0;
+  long polygons_meshed = 0, triangles = 0;
+  double certified_deviation = 0;
+  size_t bytes = 0;
+};
+
+Candidate with_meshes(const Scene& scene, const SceneBodies& bodies,
+                      const std::vector<std::optional<CertifiedBodyMesh>>& meshes, const std::vector<bool>& meshed) {
+  Candidate out{scene};
+  const std::vector<SceneNode*> nodes = nodes_in_order(out.scene.root);
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    if (!meshed[i] || !meshes[i]) continue;
+    const CertifiedBodyMesh& mesh = *meshes[i];
+    for (size_t k = 0; k < bodies.bodies[i].size(); ++k) nodes[bodies.bodies[i][k]]->shapes = mesh.shapes[k];
+    ++out.bodies_meshed;
+    out.faces_meshed += mesh.faces;
+    out.polygons_meshed += mesh.polygons;
+    out.triangles += mesh.triangles;
+    out.certified_deviation = std::max(out.certified_deviation, mesh.world_deviation);
+  }
+  return out;
+}
+
+}  // namespace
+
+size_t CodingChoiceReport::bytes() const {
+  switch (chosen) {
+    case Whole::as_is:
+      return as_is_bytes;
+    case Whole::per_body:
+      return per_body_bytes;
+    case Whole::all_meshed:
+      return all_meshed_bytes;
+  }
+  return as_is_bytes;
+}
+
+Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& parameters,
+                      const std::function<size_t(const Scene&)>& coded_bytes, CodingChoiceReport* report) {
+  const double d = parameters.max_deviation, t = parameters.mesh_share;
+  if (!(d > 0) || !std::isfinite(d))
+    throw GeometryError("cheapest_coding", "the maximum deviation must be a positive number, not " + std::to_string(d));
+  if (!(t > 0 && t < 1))
+    throw GeometryError("cheapest_coding", "the mesh share must lie in (0, 1), not " + std::to_string(t));
+  const SceneBodies bodies = scene_bodies(scene);
+  const size_t n = bodies.bodies.size();
+  std::vector<std::optional<CertifiedBodyMesh>> meshes(n);
+  std::vector<bool> cheaper_meshed(n, false), meshable(n, false);
+  int refused = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const Scene as_is = body_scene(scene, bodies, static_cast<int>(i));
+    std::string refusal;
+    meshes[i] = certified_body_mesh(as_is, t * d, &refusal);
+    if (!meshes[i]) {
+      if (!refusal.empty()) ++refused;
+      continue;
+    }
+    meshable[i] = true;
+    cheaper_meshed[i] =
+        coded_bytes(body_scene(scene, bodies, static_cast<int>(i), meshes[i]->shapes)) < coded_bytes(as_is);
+  }
+  // The three whole candidates; equal ones are costed once.
+  Candidate as_is{scene};
+  as_is.bytes = coded_bytes(scene);
+  Candidate per_body = with_meshes(scene, bodies, meshes, cheaper_meshed);
+  per_body.bytes = per_body.bodies_meshed == 0 ? as_is.bytes : coded_bytes(per_body.scene);
+  Candidate all_meshed = with_meshes(scene, bodies, meshes, meshable);
+  all_meshed.bytes =
+      all_meshed.bodies_meshed == per_body.bodies_meshed ? per_body.bytes : coded_bytes(all_meshed.scene);
+  using Whole = CodingChoiceReport::Whole;
+  Whole chosen = Whole::as_is;
+  Candidate* best = &as_is;
+  for (auto [whole, candidate] : {std::pair{Whole::per_body, &per_body}, std::pair{Whole::all_meshed, &all_meshed}})
+    if (candidate->bytes < best->bytes) chosen = whole, best = candidate;
+  if (report) {
+    CodingChoiceReport& r = *report;
+    r = {};
+    r.chosen = chosen;
+    r.bodies = static_cast<int>(n);
+    r.bodies_meshed = best->bodies_meshed;
+    r.bodies_kept = r.bodies - r.bodies_meshed;
+    r.bodies_refused = refused;
+    r.faces_meshed = best->faces_meshed;
+    r.polygons_meshed = best->polygons_meshed;
+    r.triangles = best->triangles;
+    r.certified_deviation = best->certified_deviation;
+    r.as_is_bytes = as_is.bytes;
+    r.per_body_bytes = per_body.bytes;
+    r.all_meshed_bytes = all_meshed.bytes;
+  }
+  return std::move(best->scene);
+}
+
+}  // namespace cadnurbs

@@ -1,0 +1,55 @@
+#pragma once
+// Issue 39's choice above the .cnb writer: for each body of a scene (scene_bodies.hpp: a node's shapes,
+// joined across nodes by shared model edges), the exact NURBS as they are or a certified mesh of them,
+// whichever a coder writes in fewer bytes; then the whole result against "every body as it is" and "every
+// body meshed", the smallest of the three returned.
+//
+// In: a scene (any shapes, scene units) and the writer's deviation budget; the byte cost is a callback
+// (`coded_bytes`: the size of a scene as the writer would write it), so that analysis does not depend on a
+// file format. Out: the scene with the chosen bodies' trimmed surfaces and planar polygons replaced by
+// triangle meshes (certified_body_mesh.hpp: one per node and colour, welded, without corner normals), the
+// node tree, transforms, names of nodes, curves and existing meshes kept; faces' own names are not kept in
+// a meshed body. A body whose tessellation fails or leaves a triangle uncertified keeps its NURBS.
+//
+// Why the bound holds: each meshed body is tessellated so that its world deviation is at most
+// mesh_share·D (the certificate in its own coordinates times its nodes' largest world scale), reported as
+// CodingChoiceReport::certified_deviation; the writer adds that to the move of the quantised vertices
+// (within (1 − mesh_share)·D when the writer's trim share is mesh_share), so the decoded meshes stay within
+// D of the exact faces. A body is meshed whole or not at all, and its faces' shared edges carry
+// bit-identical vertices, so a closed body stays closed (no meshed face meets a NURBS face).
+//
+// Each body is costed alone, in a scene holding just that body at its world placement (same units, so
+// the writer's quantisation grid is the same as in the whole scene). Deterministic: ties keep the NURBS,
+// and among the whole candidates the first of as-is, per-body, all-meshed wins.
+#include <cstddef>
+#include <functional>
+
+#include "core/scene.hpp"
+
+namespace cadnurbs {
+
+struct CodingChoiceParameters {
+  double max_deviation = 1.0;  // D > 0, world, scene units: the writer's bound
+  double mesh_share = 0.4;     // t in (0, 1): meshes are certified within t·D (the writer's trim share)
+};
+
+struct CodingChoiceReport {
+  enum class Whole { as_is, per_body, all_meshed };
+  Whole chosen = Whole::as_is;     // which whole candidate was returned
+  int bodies = 0;                  // bodies with shapes
+  int bodies_meshed = 0;           // in the returned scene
+  int bodies_kept = 0;             // bodies - bodies_meshed
+  int bodies_refused = 0;          // bodies whose mesh was not certified (kept as they are)
+  int faces_meshed = 0;            // trimmed surfaces written as meshes in the returned scene
+  long polygons_meshed = 0;        // planar polygons written as triangles in the returned scene
+  long triangles = 0;              // triangles of the meshes made, in the returned scene
+  double certified_deviation = 0;  // largest world deviation of the meshes made (0 when none), <= t·D
+  size_t as_is_bytes = 0, per_body_bytes = 0, all_meshed_bytes = 0;  // the three whole candidates
+  size_t bytes() const;                                              // of the returned candidate
+};
+
+// Throws GeometryError for D <= 0 or t outside (0, 1); whatever `coded_bytes` throws.
+Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& parameters,
+                      const std::function<size_t(const Scene&)>& coded_bytes, CodingChoiceReport* report = nullptr);
+
+}  // namespace cadnurbs

@@ -1,0 +1,28 @@
+#pragma once
+// The .cnb file of a scene as convert and report write it: every body coded the cheapest way within D
+// (analysis/coding_choice/cheapest_coding: its NURBS as they are or a certified mesh), costed by the .cnb
+// writer itself, then written with the meshes' certificate as their share of the bound.
+#include <string>
+
+#include "analysis/coding_choice/cheapest_coding.hpp"
+#include "core/scene.hpp"
+#include "formats/cnb/cnb_options.hpp"
+
+namespace cadnurbs {
+
+struct CnbCoding {
+  Scene scene;                // as written: the chosen bodies meshed
+  CnbOptions options;         // D, the trim share (= the meshes' share), mesh_deviation = their certificate
+  CodingChoiceReport choice;  // what was meshed, and the three candidates' bytes
+  CnbWriteReport written;     // the writer's report for `bytes`; its deviation_bound() is within D
+  std::string bytes;          // the file
+};
+
+// `max_deviation` = D > 0 in scene units. Throws as write_cnb and cheapest_coding do.
+CnbCoding cnb_coding(const Scene& scene, double max_deviation);
+
+// How the bound of a .cnb written by cnb_coding is made up, for deviation bases: "" when no body was
+// meshed, else "; it includes the certificate X of the N bodies (F faces, P polygons) written as meshes".
+std::string meshed_bodies_basis(const CodingChoiceReport& choice);
+
+}  // namespace cadnurbs
