@@ -1,5 +1,8 @@
 #include "converters/cnb_coding.hpp"
 
+#include <limits>
+#include <stdexcept>
+
 #include "core/number_format.hpp"
 #include "formats/cnb/cnb_writer.hpp"
 
@@ -14,11 +17,18 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation) {
   CnbCoding out;
   out.options.max_deviation = max_deviation;
   out.options.trim_share = kMeshShare;
-  // The bytes do not depend on mesh_deviation (it only joins the stated bound), so candidates are costed
-  // without it.
-  const CnbOptions costing = out.options;
-  out.scene = cheapest_coding(
-      scene, {max_deviation, kMeshShare}, [&](const Scene& s) { return write_cnb(s, costing).size(); }, &out.choice);
+  // A candidate the writer refuses (std::invalid_argument: options it cannot meet for that scene) is never
+  // the cheapest; the scene as it is, if refused too, fails in the last write below with the writer's message.
+  auto coded_bytes = [&](const Scene& s, double mesh_deviation) {
+    CnbOptions options = out.options;
+    options.mesh_deviation = mesh_deviation;  // the header states the bound it makes part of
+    try {
+      return write_cnb(s, options).size();
+    } catch (const std::invalid_argument&) {
+      return std::numeric_limits<size_t>::max();
+    }
+  };
+  out.scene = cheapest_coding(scene, {max_deviation, kMeshShare}, coded_bytes, &out.choice);
   out.options.mesh_deviation = out.choice.certified_deviation;
   out.bytes = write_cnb(out.scene, out.options, &out.written);
   return out;

@@ -18,7 +18,9 @@ struct CnbCoding {
   std::string bytes;          // the file
 };
 
-// `max_deviation` = D > 0 in scene units. Throws as write_cnb and cheapest_coding do.
+// `max_deviation` = D > 0 in scene units. Candidates are costed by write_cnb with the meshes' certificate as
+// mesh_deviation (the header states the bound), so `bytes` is the size the choice was made on; a candidate
+// the writer refuses is not chosen. Throws as write_cnb (for the scene as it is) and cheapest_coding do.
 CnbCoding cnb_coding(const Scene& scene, double max_deviation);
 
 // How the bound of a .cnb written by cnb_coding is made up, for deviation bases: "" when no body was

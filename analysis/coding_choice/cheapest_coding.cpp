@@ -53,8 +53,8 @@ size_t CodingChoiceReport::bytes() const {
   return as_is_bytes;
 }
 
-Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& parameters,
-                      const std::function<size_t(const Scene&)>& coded_bytes, CodingChoiceReport* report) {
+Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& parameters, const CodedBytes& coded_bytes,
+                      CodingChoiceReport* report) {
   const double d = parameters.max_deviation, t = parameters.mesh_share;
   if (!(d > 0) || !std::isfinite(d))
     throw GeometryError("cheapest_coding", "the maximum deviation must be a positive number, not " + std::to_string(d));
@@ -74,17 +74,19 @@ Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& paramete
       continue;
     }
     meshable[i] = true;
-    cheaper_meshed[i] =
-        coded_bytes(body_scene(scene, bodies, static_cast<int>(i), meshes[i]->shapes)) < coded_bytes(as_is);
+    const Scene meshed = body_scene(scene, bodies, static_cast<int>(i), meshes[i]->shapes);
+    cheaper_meshed[i] = coded_bytes(meshed, meshes[i]->world_deviation) < coded_bytes(as_is, 0.0);
   }
   // The three whole candidates; equal ones are costed once.
   Candidate as_is{scene};
-  as_is.bytes = coded_bytes(scene);
+  as_is.bytes = coded_bytes(scene, 0.0);
   Candidate per_body = with_meshes(scene, bodies, meshes, cheaper_meshed);
-  per_body.bytes = per_body.bodies_meshed == 0 ? as_is.bytes : coded_bytes(per_body.scene);
+  per_body.bytes =
+      per_body.bodies_meshed == 0 ? as_is.bytes : coded_bytes(per_body.scene, per_body.certified_deviation);
   Candidate all_meshed = with_meshes(scene, bodies, meshes, meshable);
-  all_meshed.bytes =
-      all_meshed.bodies_meshed == per_body.bodies_meshed ? per_body.bytes : coded_bytes(all_meshed.scene);
+  all_meshed.bytes = all_meshed.bodies_meshed == per_body.bodies_meshed
+                         ? per_body.bytes
+                         : coded_bytes(all_meshed.scene, all_meshed.certified_deviation);
   using Whole = CodingChoiceReport::Whole;
   Whole chosen = Whole::as_is;
   Candidate* best = &as_is;

@@ -5,11 +5,12 @@
 // body meshed", the smallest of the three returned.
 //
 // In: a scene (any shapes, scene units) and the writer's deviation budget; the byte cost is a callback
-// (`coded_bytes`: the size of a scene as the writer would write it), so that analysis does not depend on a
-// file format. Out: the scene with the chosen bodies' trimmed surfaces and planar polygons replaced by
-// triangle meshes (certified_body_mesh.hpp: one per node and colour, welded, without corner normals), the
-// node tree, transforms, names of nodes, curves and existing meshes kept; faces' own names are not kept in
-// a meshed body. A body whose tessellation fails or leaves a triangle uncertified keeps its NURBS.
+// (`coded_bytes(scene, mesh_deviation)`: the size of a scene as the writer would write it when told that
+// the meshes made here lie within mesh_deviation of the exact faces, world units, 0 when it holds none),
+// so that analysis does not depend on a file format. Out: the scene with the chosen bodies' trimmed surfaces and planar
+// polygons replaced by triangle meshes (certified_body_mesh.hpp: one per node and colour, welded, without corner
+// normals), the node tree, transforms, names of nodes, curves and existing meshes kept; faces' own names are not kept
+// in a meshed body. A body whose tessellation fails or leaves a triangle uncertified keeps its NURBS.
 //
 // Why the bound holds: each meshed body is tessellated so that its world deviation is at most
 // mesh_share·D (the certificate in its own coordinates times its nodes' largest world scale), reported as
@@ -49,7 +50,8 @@ struct CodingChoiceReport {
 };
 
 // Throws GeometryError for D <= 0 or t outside (0, 1); whatever `coded_bytes` throws.
-Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& parameters,
-                      const std::function<size_t(const Scene&)>& coded_bytes, CodingChoiceReport* report = nullptr);
+using CodedBytes = std::function<size_t(const Scene& scene, double mesh_deviation)>;
+Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& parameters, const CodedBytes& coded_bytes,
+                      CodingChoiceReport* report = nullptr);
 
 }  // namespace cadnurbs

@@ -59,11 +59,12 @@ Scene scene_of(std::vector<SceneNode> nodes) {
   return scene;
 }
 
-std::function<size_t(const Scene&)> cnb_bytes(double d) {
-  return [d](const Scene& scene) {
+CodedBytes cnb_bytes(double d) {
+  return [d](const Scene& scene, double mesh_deviation) {
     CnbOptions options;
     options.max_deviation = d;
-    options.trim_share = kMeshShare;  // mesh_deviation only joins the stated bound: the bytes do not depend on it
+    options.trim_share = kMeshShare;
+    options.mesh_deviation = mesh_deviation;
     return write_cnb(scene, options).size();
   };
 }
@@ -86,9 +87,9 @@ TEST(CheapestCoding, CubeAtCoarseDeviationIsMeshedAndSmallest) {
   EXPECT_LE(report.certified_deviation, kMeshShare * d);
   ASSERT_EQ(shapes_holding_meshes(chosen.root.children[0]), 1);
   EXPECT_TRUE(std::get<TriangleMesh>(chosen.root.children[0].shapes[0].geometry).corner_normals.empty());
-  const size_t chosen_bytes = cnb_bytes(d)(chosen);
+  const size_t chosen_bytes = cnb_bytes(d)(chosen, report.certified_deviation);
   EXPECT_EQ(chosen_bytes, report.bytes());
-  EXPECT_LE(chosen_bytes, cnb_bytes(d)(cube));
+  EXPECT_LE(chosen_bytes, cnb_bytes(d)(cube, 0));
   EXPECT_LE(chosen_bytes, report.all_meshed_bytes);
   EXPECT_LT(chosen_bytes, report.as_is_bytes);
   std::cout << "cube: as is " << report.as_is_bytes << " bytes, meshed " << chosen_bytes << "\n";
@@ -165,7 +166,7 @@ TEST(CheapestCoding, NodesSharingAnEdgeAreMeshedTogetherOrNotAtAll) {
   EXPECT_EQ(bodies.bodies[1], (std::vector<int>{3}));
   // A cost that rewards a mesh in "a" and "c" and punishes one in "b" more than "a" gains.
   const std::map<std::string, std::array<size_t, 2>> cost = {{"a", {100, 10}}, {"b", {100, 250}}, {"c", {100, 10}}};
-  const auto coded_bytes = [&](const Scene& s) {
+  const auto coded_bytes = [&](const Scene& s, double) {
     size_t bytes = 0;
     for (const auto& node : s.root.children) bytes += cost.at(node.name)[shapes_holding_meshes(node) > 0];
     return bytes;
