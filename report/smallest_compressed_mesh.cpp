@@ -5,6 +5,7 @@
 #include <optional>
 #include <variant>
 
+#include "analysis/mesh/oriented_triangle_keys.hpp"
 #include "analysis/mesh/scene_triangles.hpp"
 #include "analysis/mesh/weld_exact.hpp"
 #include "analysis/mesh/weld_vertices.hpp"
@@ -22,30 +23,6 @@ const char* const kEntity = "mesh encoding";
 
 std::vector<Eigen::Vector3d> quantised_positions(const TriangleMesh& mesh, MeshCodec codec, int bits) {
   return codec == MeshCodec::draco ? draco_quantised_positions(mesh, bits) : meshopt_quantised_positions(mesh, bits);
-}
-
-// A triangle by its corner positions, rotated so that the smallest corner comes first (orientation kept):
-// equal for the same triangle whatever the vertex order and first corner of the mesh holding it.
-using TriangleKey = std::array<double, 9>;
-
-std::vector<TriangleKey> triangle_keys(const std::vector<Eigen::Vector3d>& positions,
-                                       const std::vector<std::array<int, 3>>& triangles) {
-  auto less = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
-  };
-  std::vector<TriangleKey> keys;
-  keys.reserve(triangles.size());
-  for (const auto& t : triangles) {
-    int first = 0;
-    for (int k = 1; k < 3; ++k)
-      if (less(positions[t[k]], positions[t[first]])) first = k;
-    TriangleKey key{};
-    for (int k = 0; k < 3; ++k)
-      for (int c = 0; c < 3; ++c) key[3 * k + c] = positions[t[(first + k) % 3]][c];
-    keys.push_back(key);
-  }
-  std::sort(keys.begin(), keys.end());
-  return keys;
 }
 
 // Whether the quantised positions `q` (mesh.positions' order) put two corners of a triangle on one grid
@@ -98,8 +75,8 @@ Candidate encode_candidate(const TriangleMesh& mesh, double max_deviation, doubl
   f.vertices = static_cast<long>(out.decoded.positions.size());
   f.triangles = static_cast<long>(out.decoded.triangles.size());
   // The bound rests on this: the decoded triangles are ours, each corner where the replay put it.
-  if (triangle_keys(out.decoded.positions, out.decoded.triangles) !=
-      triangle_keys(quantised_positions(mesh, codec, f.position_bits), mesh.triangles))
+  if (oriented_triangle_keys(out.decoded.positions, out.decoded.triangles) !=
+      oriented_triangle_keys(quantised_positions(mesh, codec, f.position_bits), mesh.triangles))
     throw GeometryError(kEntity, "the decoded " + name + " is not the quantised tessellation");
   return out;
 }

@@ -41,6 +41,12 @@ NurbsCurve read_curve(ByteReader& in, double q, CodingState& state);
 // previous index; normals (triangle meshes) to 1/32767 per component.
 void write_triangle_mesh(ByteWriter& out, const TriangleMesh& mesh, double q);
 TriangleMesh read_triangle_mesh(ByteReader& in, double q);
+// A triangle mesh without corner normals and without triangles that repeat a vertex, coded by a traversal
+// (cnb_traversal_mesh_coding.cpp): decoded with the same triangles (same orientation) and vertices on the
+// grid q, in the order the traversal meets them; vertices no triangle uses are not kept.
+bool traversal_codable(const TriangleMesh& mesh);
+void write_traversal_mesh(ByteWriter& out, const TriangleMesh& mesh, double q);
+TriangleMesh read_traversal_mesh(ByteReader& in, double q);
 void write_polygon_mesh(ByteWriter& out, const PolygonMesh& mesh, double q);
 PolygonMesh read_polygon_mesh(ByteReader& in, double q);
 

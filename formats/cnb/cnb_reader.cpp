@@ -69,7 +69,7 @@ struct SceneDecoder {
     const size_t start = in.offset();
     const uint8_t kind_byte = in.byte(Field::structure);
     const uint8_t kind = kind_byte & ~has_colour_flag;
-    if (kind > repeated_shape_kind) in.fail("unknown shape kind " + std::to_string(kind_byte), start);
+    if (kind > traversal_mesh_kind) in.fail("unknown shape kind " + std::to_string(kind_byte), start);
     Shape s;
     s.name = in.text();
     if (kind_byte & has_colour_flag) s.colour = colour();
@@ -95,6 +95,8 @@ struct SceneDecoder {
       s.geometry = read_curve(in, q, state);
     } else if (kind == 2) {
       s.geometry = read_triangle_mesh(in, q);
+    } else if (kind == traversal_mesh_kind) {
+      s.geometry = read_traversal_mesh(in, q);
     } else {
       s.geometry = read_polygon_mesh(in, q);
     }

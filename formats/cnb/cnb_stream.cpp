@@ -17,6 +17,9 @@ void ByteWriter::put(uint8_t value, int context) {
 }
 
 void ByteWriter::byte(uint8_t value, Field field) { put(value, first_context(field)); }
+void ByteWriter::byte(uint8_t value, Field field, bool second) {
+  put(value, second ? continuation_context(field) : first_context(field));
+}
 
 void ByteWriter::varuint(uint64_t value, Field field) {
   int context = first_context(field);
@@ -52,6 +55,9 @@ uint8_t ByteReader::take(int context) {
 }
 
 uint8_t ByteReader::byte(Field field) { return take(first_context(field)); }
+uint8_t ByteReader::byte(Field field, bool second) {
+  return take(second ? continuation_context(field) : first_context(field));
+}
 
 uint64_t ByteReader::varuint(Field field) {
   const size_t start = offset_;

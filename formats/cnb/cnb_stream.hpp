@@ -12,8 +12,12 @@
 namespace cadnurbs::cnb {
 
 // What a byte is part of. A varint's first byte and its continuation bytes get different contexts.
-enum class Field : uint8_t { structure, count, text, knot, weight, point, trim, index, raw };
-constexpr int field_count = 9;
+// A traversal-coded mesh's connectivity symbols, and its vertices: differences from the prediction,
+// ranks among the values met, and which axes are such values (cnb_vertex_values.hpp).
+enum class Field : uint8_t {
+  structure, count, text, knot, weight, point, trim, index, raw, symbol, mesh_point, mesh_rank, mesh_axes
+};
+constexpr int field_count = 13;
 // Contexts: 2 per field (first / continuation byte of a varint) plus 8 for the bytes of a float64.
 constexpr int context_count = 2 * field_count + 8;
 
@@ -28,6 +32,9 @@ struct PayloadError : std::runtime_error {
 class ByteWriter {
  public:
   void byte(uint8_t value, Field field = Field::structure);
+  // A byte of a field that is never a varint, in its first (second = false) or second context: two
+  // models for one field, chosen by what came before (the reader makes the same choice).
+  void byte(uint8_t value, Field field, bool second);
   void varuint(uint64_t value, Field field);
   void varsint(int64_t value, Field field);  // zig-zag: 0, -1, 1, -2, ... -> 0, 1, 2, 3, ...
   void float64(double value);
@@ -57,6 +64,7 @@ class ByteReader {
   ByteReader(ByteSource& source, size_t size) : source_(source), size_(size) {}
 
   uint8_t byte(Field field = Field::structure);
+  uint8_t byte(Field field, bool second);
   uint64_t varuint(Field field);
   int64_t varsint(Field field);
   double float64();

@@ -15,6 +15,12 @@ namespace {
 
 using namespace cnb;
 
+// The shape kind byte's low bits for a geometry written in full.
+uint8_t geometry_kind(const Geometry& g) {
+  const auto* mesh = std::get_if<TriangleMesh>(&g);
+  return mesh && traversal_codable(*mesh) ? traversal_mesh_kind : static_cast<uint8_t>(g.index());
+}
+
 struct SceneEncoder {
   ByteWriter out;
   const CnbOptions& options;
@@ -53,7 +59,8 @@ struct SceneEncoder {
     } else if (const auto* c = std::get_if<NurbsCurve>(&g)) {
       write_curve(w, *c, q, st);
     } else if (const auto* m = std::get_if<TriangleMesh>(&g)) {
-      write_triangle_mesh(w, *m, q);
+      if (traversal_codable(*m)) write_traversal_mesh(w, *m, q);
+      else write_triangle_mesh(w, *m, q);
       report.mesh_bound = options.mesh_deviation;
     } else {
       write_polygon_mesh(w, std::get<PolygonMesh>(g), q);
@@ -67,7 +74,7 @@ struct SceneEncoder {
     fresh.trim_extrapolation = state.trim_extrapolation;
     geometry(canonical, s.geometry, world_scale, fresh, false);
     const auto [earlier, is_new] = written.emplace(canonical.bytes(), shape_count);
-    const uint8_t kind = is_new ? static_cast<uint8_t>(s.geometry.index()) : repeated_shape_kind;
+    const uint8_t kind = is_new ? geometry_kind(s.geometry) : repeated_shape_kind;
     out.byte(static_cast<uint8_t>(kind | (s.colour ? has_colour_flag : 0)), Field::structure);
     out.text(s.name);
     if (s.colour) colour(*s.colour);
@@ -122,7 +129,7 @@ std::string encode(const Scene& scene, const CnbOptions& options, bool trim_extr
   for (uint8_t context : payload.contexts()) {
     const int field = context / 2;
     if (field >= field_count) r.float_bytes++;
-    else if (field == static_cast<int>(Field::point)) r.point_bytes++;
+    else if (field == static_cast<int>(Field::point) || field == static_cast<int>(Field::mesh_point)) r.point_bytes++;
     else if (field == static_cast<int>(Field::trim)) r.trim_bytes++;
     else if (field == static_cast<int>(Field::knot)) r.knot_bytes++;
     else if (field == static_cast<int>(Field::weight)) r.weight_bytes++;

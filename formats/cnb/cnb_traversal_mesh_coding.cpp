@@ -1,0 +1,442 @@
+// Triangle meshes coded by a traversal of their triangles (docs/cnb.md, "Traversal-coded triangle mesh"):
+// a region grows from one triangle across the edges of its border, and each step says in one symbol how
+// the triangle beyond the border edge (the gate) meets the region. Most steps add a new vertex (its
+// position predicted by completing the parallelogram of the gate's triangle) or close on the border's
+// neighbouring edge, so connectivity costs about a symbol per triangle and positions of box-like parts
+// mostly predict exactly.
+//
+// The symbols are those of Rossignac's Edgebreaker (C, L, R, E; IEEE TVCG 5(1), 1999) and the border
+// handling that of Gumhold and Strasser's cut-border machine (SIGGRAPH 1998): the border is a set of
+// cyclic lists of edges. A triangle whose third vertex is already in the region but not beside the gate
+// names that vertex by its number (Edgebreaker's S, which needs no number but a second decoding pass),
+// and where that vertex is on the border the lists are split or joined there. A boundary edge is dropped
+// by one symbol, and so is an edge whose far triangle the region reached another way (only where edges
+// are not manifold). So any oriented triangle list is coded, manifold or not, with boundaries and
+// handles, and the decoder replays the same list operations. Measured against Draco on library parts'
+// certified meshes: bench/cnb_mesh_against_draco.cpp.
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "formats/cnb/cnb_geometry.hpp"
+#include "formats/cnb/cnb_numbers.hpp"
+#include "formats/cnb/cnb_vertex_values.hpp"
+
+namespace cadnurbs::cnb {
+
+namespace {
+
+// The symbols, one byte each.
+enum Symbol : uint8_t {
+  new_vertex = 0,       // C: the far vertex is new; its position follows
+  closes_next = 1,      // R: the far vertex ends the border edge after the gate
+  closes_previous = 2,  // L: the far vertex starts the border edge before the gate
+  closes_both = 3,      // E: both
+  old_vertex = 4,       // the far vertex is an earlier one, named by its number
+  no_triangle = 5,      // the gate is a boundary edge (or one whose far side is not paired)
+  reached = 6,          // the gate's far triangle is already in the region
+};
+constexpr uint8_t symbol_count = 7;
+
+// One edge of the border, directed so that the region lies on its left: from -> to in the triangle
+// `apex` completes. The encoder also keeps the edge's half-edge in the input mesh.
+struct BorderEdge {
+  int from, to, apex;
+  int half_edge;
+  int previous, next;  // places in the pool
+};
+
+// The border: cyclic lists of border edges over a pool (a removed edge's place is not reused: the pool
+// grows by at most two per triangle). The gate's list is worked on; the others wait on a stack.
+class Border {
+ public:
+  bool empty() const { return gate_ < 0; }
+  int gate() const { return gate_; }
+  BorderEdge& operator[](int i) { return pool_[i]; }
+
+  // A new list of three edges; the gate is the first.
+  void start(const std::array<BorderEdge, 3>& edges) {
+    const int first = static_cast<int>(pool_.size());
+    for (int k = 0; k < 3; ++k) {
+      BorderEdge e = edges[k];
+      e.previous = first + (k + 2) % 3;
+      e.next = first + (k + 1) % 3;
+      add(e);
+    }
+    gate_ = first;
+  }
+  // Takes up a waiting list when the gate's list is used up; false when none is left.
+  bool resume() {
+    while (gate_ < 0 && !waiting_.empty()) {
+      if (alive_[waiting_.back()]) gate_ = waiting_.back();
+      waiting_.pop_back();
+    }
+    return gate_ >= 0;
+  }
+  // Removes edge i; the gate moves to the edge after it (or its list is used up).
+  void remove(int i) {
+    alive_[i] = false;
+    if (pool_[i].next == i) {
+      gate_ = -1;
+      return;
+    }
+    pool_[pool_[i].previous].next = pool_[i].next;
+    pool_[pool_[i].next].previous = pool_[i].previous;
+    gate_ = pool_[i].next;
+  }
+  // Puts `e` in place of edge i; the gate becomes `e`.
+  int replace(int i, BorderEdge e) {
+    const int at = static_cast<int>(pool_.size());
+    if (pool_[i].next == i) {
+      e.previous = e.next = at;
+    } else {
+      e.previous = pool_[i].previous;
+      e.next = pool_[i].next;
+      pool_[e.previous].next = at;
+      pool_[e.next].previous = at;
+    }
+    alive_[i] = false;
+    add(e);
+    gate_ = at;
+    return at;
+  }
+  // Puts `first` then `second` in place of edge i; the gate becomes `second`.
+  void replace_by_two(int i, BorderEdge first, BorderEdge second) {
+    const int a = replace(i, first);
+    const int b = static_cast<int>(pool_.size());
+    second.previous = a;
+    second.next = pool_[a].next == a ? a : pool_[a].next;
+    add(second);
+    pool_[second.next].previous = b;
+    pool_[a].next = b;
+    if (pool_[a].previous == a) pool_[a].previous = b;
+    gate_ = b;
+  }
+  // The latest border edge that starts at vertex v, or -1.
+  int edge_from(int v) const {
+    const auto found = starts_.find(v);
+    if (found == starts_.end()) return -1;
+    for (auto i = found->second.rbegin(); i != found->second.rend(); ++i)
+      if (alive_[*i]) return *i;
+    return -1;
+  }
+  // The border after the far triangle of gate g, whose edges are `left` (ending at its vertex v) and
+  // `right` (starting at v), met the region as `symbol` says: closing on the edge before the gate, after
+  // it, or both, or adding its two edges.
+  void advance(uint8_t symbol, int g, const BorderEdge& left, const BorderEdge& right, int v) {
+    const int before = pool_[g].previous, after = pool_[g].next;
+    if (symbol == closes_both) {
+      remove(before);
+      remove(g);
+      remove(after);
+    } else if (symbol == closes_previous) {
+      remove(before);
+      replace(g, right);
+    } else if (symbol == closes_next) {
+      remove(after);
+      replace(g, left);
+    } else {
+      place(g, left, right, v);
+    }
+  }
+
+  // The far triangle's edges `first` (ending at v) and `second` (starting at v) in place of edge i; where
+  // v is on the border already, the lists are joined there (split or merged).
+  void place(int i, const BorderEdge& first, const BorderEdge& second, int v) {
+    const int at_v = edge_from(v);
+    if (at_v >= 0)
+      join_at(i, first, second, at_v);
+    else
+      replace_by_two(i, first, second);
+  }
+
+ private:
+  // Puts `first` (ending at v) and `second` (starting at v) in place of edge i, where v already starts
+  // the border edge `at_v`, and then exchanges the successors of `first` and of the edge before at_v:
+  // first runs on into at_v, and that edge into second. On one list this splits it in two (the one
+  // through `first` waits); on two lists it joins them. (Lists are only lists of edges: where a boundary
+  // edge was removed, neighbours need not share a vertex, so no case is ruled out and the exchange is the
+  // one operation that is right in all of them.) The gate becomes `second`.
+  void join_at(int i, BorderEdge first, BorderEdge second, int at_v) {
+    replace_by_two(i, first, second);
+    const int f = pool_[gate_].previous, x = pool_[at_v].previous;
+    const int after_f = pool_[f].next, after_x = pool_[x].next;
+    pool_[f].next = after_x;
+    pool_[after_x].previous = f;
+    pool_[x].next = after_f;
+    pool_[after_f].previous = x;
+    waiting_.push_back(f);
+  }
+
+  void add(const BorderEdge& e) {
+    starts_[e.from].push_back(static_cast<int>(pool_.size()));
+    pool_.push_back(e);
+    alive_.push_back(true);
+  }
+  std::vector<BorderEdge> pool_;
+  std::vector<bool> alive_;
+  std::unordered_map<int, std::vector<int>> starts_;
+  std::vector<int> waiting_;
+  int gate_ = -1;
+};
+
+// Where the parallelogram of the gate's triangle (from, to, apex) puts the far vertex.
+GridPoint parallelogram(const GridPoint& from, const GridPoint& to, const GridPoint& apex) {
+  return {from[0] + to[0] - apex[0], from[1] + to[1] - apex[1], from[2] + to[2] - apex[2]};
+}
+
+class TraversalEncoder {
+ public:
+  TraversalEncoder(ByteWriter& out, const TriangleMesh& mesh, double q) : out_(out), mesh_(mesh) {
+    grid_.reserve(mesh.positions.size());
+    for (const auto& p : mesh.positions) grid_.push_back({on_grid(p.x(), q), on_grid(p.y(), q), on_grid(p.z(), q)});
+    pair_half_edges();
+  }
+
+  void encode() {
+    const size_t triangles = mesh_.triangles.size();
+    out_.varuint(used_vertex_count(), Field::count);
+    out_.varuint(triangles, Field::count);
+    visited_.assign(triangles, false);
+    number_.assign(mesh_.positions.size(), -1);
+    size_t first_unvisited = 0;
+    while (written_ < triangles) {
+      if (border_.empty() && !border_.resume()) {
+        while (visited_[first_unvisited]) ++first_unvisited;
+        start(static_cast<int>(first_unvisited));
+      } else {
+        step();
+      }
+    }
+  }
+
+ private:
+  int corner(int half_edge, int offset) const { return mesh_.triangles[half_edge / 3][(half_edge % 3 + offset) % 3]; }
+
+  // Half-edge h = 3t + k runs from corner k to corner k+1 of triangle t. It pairs with the opposite
+  // half-edge when each direction of that edge occurs exactly once.
+  void pair_half_edges() {
+    std::map<std::pair<int, int>, std::vector<int>> by_ends;
+    const int n = static_cast<int>(3 * mesh_.triangles.size());
+    for (int h = 0; h < n; ++h) by_ends[{corner(h, 0), corner(h, 1)}].push_back(h);
+    twin_.assign(n, -1);
+    for (int h = 0; h < n; ++h) {
+      const auto& same = by_ends[{corner(h, 0), corner(h, 1)}];
+      const auto opposite = by_ends.find({corner(h, 1), corner(h, 0)});
+      if (same.size() == 1 && opposite != by_ends.end() && opposite->second.size() == 1) twin_[h] = opposite->second[0];
+    }
+  }
+
+  size_t used_vertex_count() const {
+    std::vector<bool> used(mesh_.positions.size(), false);
+    for (const auto& t : mesh_.triangles)
+      for (int v : t) used[v] = true;
+    return static_cast<size_t>(std::count(used.begin(), used.end(), true));
+  }
+
+  // A symbol, in the model of those that follow a new vertex or of those that follow anything else.
+  void symbol(uint8_t s) {
+    out_.byte(s, Field::symbol, previous_ != new_vertex);
+    previous_ = s;
+  }
+
+  // Names vertex v: new (its position predicted by `predicted`) or by its number.
+  void vertex(int v, const GridPoint& predicted) {
+    if (number_[v] < 0) {
+      symbol(new_vertex);
+      values_.write(out_, grid_[v], predicted);
+      number_[v] = count_++;
+      last_ = grid_[v];
+    } else {
+      symbol(old_vertex);
+      out_.varuint(static_cast<uint64_t>(count_ - 1 - number_[v]), Field::index);
+    }
+  }
+
+  void start(int t) {
+    visited_[t] = true;
+    ++written_;
+    for (int k = 0; k < 3; ++k) vertex(mesh_.triangles[t][k], last_);
+    std::array<BorderEdge, 3> edges;
+    for (int k = 0; k < 3; ++k)
+      edges[k] = {corner(3 * t + k, 0), corner(3 * t + k, 1), corner(3 * t + k, 2), 3 * t + k, 0, 0};
+    border_.start(edges);
+  }
+
+  void step() {
+    const int g = border_.gate();
+    const BorderEdge gate = border_[g];
+    const int far = twin_[gate.half_edge];
+    if (far < 0 || visited_[far / 3]) {
+      symbol(far < 0 ? no_triangle : reached);
+      border_.remove(g);
+      return;
+    }
+    visited_[far / 3] = true;
+    ++written_;
+    // The far triangle runs to -> from -> v; its edges from -> v and v -> to join the border.
+    const int v = corner(far, 2);
+    const int to_apex = 3 * (far / 3) + (far % 3 + 1) % 3;  // from -> v
+    const int apex_to = 3 * (far / 3) + (far % 3 + 2) % 3;  // v -> to
+    const BorderEdge& before = border_[gate.previous];
+    const BorderEdge& after = border_[gate.next];
+    const bool closes_before = gate.previous != g && before.half_edge == twin_[to_apex] && twin_[to_apex] >= 0;
+    const bool closes_after = gate.next != g && after.half_edge == twin_[apex_to] && twin_[apex_to] >= 0;
+    const BorderEdge left{gate.from, v, gate.to, to_apex, 0, 0}, right{v, gate.to, gate.from, apex_to, 0, 0};
+    uint8_t s = closes_before && closes_after ? closes_both
+                : closes_before               ? closes_previous
+                : closes_after                ? closes_next
+                                              : new_vertex;
+    if (s == new_vertex)
+      vertex(v, parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex]));
+    else
+      symbol(s);
+    border_.advance(s, g, left, right, v);
+  }
+
+  ByteWriter& out_;
+  const TriangleMesh& mesh_;
+  std::vector<GridPoint> grid_;
+  std::vector<int> twin_;
+  std::vector<bool> visited_;
+  std::vector<int> number_;  // input vertex -> decoded vertex number, -1 before it is met
+  int count_ = 0;
+  size_t written_ = 0;
+  uint8_t previous_ = new_vertex;
+  GridPoint last_{0, 0, 0};
+  Border border_;
+  VertexValues values_;
+};
+
+class TraversalDecoder {
+ public:
+  TraversalDecoder(ByteReader& in, double q) : in_(in), q_(q) {}
+
+  TriangleMesh decode() {
+    vertex_count_ = in_.count(4);
+    const size_t triangles = in_.count(1);
+    grid_.reserve(vertex_count_);
+    mesh_.triangles.reserve(triangles);
+    while (mesh_.triangles.size() < triangles) {
+      if (border_.empty() && !border_.resume())
+        start();
+      else
+        step();
+    }
+    if (grid_.size() != vertex_count_)
+      in_.fail(std::to_string(grid_.size()) + " vertices met where " + std::to_string(vertex_count_) +
+               " were declared");
+    mesh_.positions.reserve(grid_.size());
+    for (const auto& p : grid_)
+      mesh_.positions.emplace_back(static_cast<double>(p[0]) * q_, static_cast<double>(p[1]) * q_,
+                                   static_cast<double>(p[2]) * q_);
+    return std::move(mesh_);
+  }
+
+ private:
+  int vertex(uint8_t symbol, size_t at, const GridPoint& predicted) {
+    if (symbol == new_vertex) {
+      if (grid_.size() >= vertex_count_)
+        in_.fail("more vertices than the " + std::to_string(vertex_count_) + " declared", at);
+      const GridPoint p = values_.read(in_, predicted);
+      grid_.push_back(p);
+      last_ = p;
+      return static_cast<int>(grid_.size() - 1);
+    }
+    if (symbol != old_vertex) in_.fail("symbol " + std::to_string(symbol) + " where a vertex is named", at);
+    const size_t ref_at = in_.offset();
+    const uint64_t back = in_.varuint(Field::index);
+    if (back >= grid_.size())
+      in_.fail("vertex " + std::to_string(back + 1) + " back, with " + std::to_string(grid_.size()) + " before it",
+               ref_at);
+    return static_cast<int>(grid_.size() - 1 - back);
+  }
+
+  uint8_t symbol() {
+    previous_ = in_.byte(Field::symbol, previous_ != new_vertex);
+    return previous_;
+  }
+
+  void triangle(int a, int b, int c, size_t at) {
+    if (a == b || b == c || c == a) in_.fail("a triangle with a repeated vertex", at);
+    mesh_.triangles.push_back({a, b, c});
+  }
+
+  void start() {
+    std::array<int, 3> v;
+    for (int k = 0; k < 3; ++k) {
+      const size_t at = in_.offset();
+      v[k] = vertex(symbol(), at, last_);
+    }
+    triangle(v[0], v[1], v[2], in_.offset());
+    border_.start({BorderEdge{v[0], v[1], v[2], -1, 0, 0}, BorderEdge{v[1], v[2], v[0], -1, 0, 0},
+                   BorderEdge{v[2], v[0], v[1], -1, 0, 0}});
+  }
+
+  void step() {
+    const size_t at = in_.offset();
+    const uint8_t symbol = this->symbol();
+    const int g = border_.gate();
+    const BorderEdge gate = border_[g];
+    if (symbol >= symbol_count) in_.fail("unknown mesh symbol " + std::to_string(symbol), at);
+    if (symbol == no_triangle || symbol == reached) {
+      border_.remove(g);
+      return;
+    }
+    const bool uses_before = symbol == closes_previous || symbol == closes_both;
+    const bool uses_after = symbol == closes_next || symbol == closes_both;
+    const int needed = 1 + (uses_before ? 1 : 0) + (uses_after ? 1 : 0);
+    if (border_size_below(g, needed)) in_.fail("the border is too short for mesh symbol " + std::to_string(symbol), at);
+    int v;
+    if (uses_before)
+      v = border_[gate.previous].from;
+    else if (uses_after)
+      v = border_[gate.next].to;
+    else
+      v = vertex(symbol, at, parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex]));
+    triangle(gate.to, gate.from, v, at);
+    const BorderEdge left{gate.from, v, gate.to, -1, 0, 0}, right{v, gate.to, gate.from, -1, 0, 0};
+    border_.advance(symbol, g, left, right, v);
+  }
+
+  // Whether the loop through edge g holds fewer than n distinct edges.
+  bool border_size_below(int g, int n) {
+    int i = g;
+    for (int k = 1; k < n; ++k) {
+      i = border_[i].next;
+      if (i == g) return true;
+    }
+    return false;
+  }
+
+  ByteReader& in_;
+  double q_;
+  size_t vertex_count_ = 0;
+  std::vector<GridPoint> grid_;
+  TriangleMesh mesh_;
+  VertexValues values_;
+  uint8_t previous_ = new_vertex;
+  GridPoint last_{0, 0, 0};
+  Border border_;
+};
+
+}  // namespace
+
+bool traversal_codable(const TriangleMesh& mesh) {
+  if (!mesh.corner_normals.empty() || mesh.triangles.empty()) return false;
+  for (const auto& t : mesh.triangles)
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return false;
+  return true;
+}
+
+void write_traversal_mesh(ByteWriter& out, const TriangleMesh& mesh, double q) {
+  TraversalEncoder(out, mesh, q).encode();
+}
+
+TriangleMesh read_traversal_mesh(ByteReader& in, double q) { return TraversalDecoder(in, q).decode(); }
+
+}  // namespace cadnurbs::cnb

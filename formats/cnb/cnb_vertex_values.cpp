@@ -1,0 +1,59 @@
+#include "formats/cnb/cnb_vertex_values.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace cadnurbs::cnb {
+
+namespace {
+// Where `value` falls in the sorted table: the place of the first value not below it.
+int64_t place_of(const std::vector<int64_t>& sorted, int64_t value) {
+  return std::lower_bound(sorted.begin(), sorted.end(), value) - sorted.begin();
+}
+}  // namespace
+
+void VertexValues::remember(int axis, int64_t value) {
+  auto& sorted = sorted_[axis];
+  const auto at = std::lower_bound(sorted.begin(), sorted.end(), value);
+  if (sorted.size() < value_table_limit && (at == sorted.end() || *at != value)) sorted.insert(at, value);
+}
+
+void VertexValues::write(ByteWriter& out, const GridPoint& p, const GridPoint& predicted) {
+  uint8_t known = 0;
+  for (int k = 0; k < 3; ++k)
+    if (std::binary_search(sorted_[k].begin(), sorted_[k].end(), p[k])) known |= static_cast<uint8_t>(1 << k);
+  out.byte(known, Field::mesh_axes);
+  for (int k = 0; k < 3; ++k) {
+    if (known & (1 << k))
+      out.varsint(place_of(sorted_[k], p[k]) - place_of(sorted_[k], predicted[k]), Field::mesh_rank);
+    else
+      out.varsint(p[k] - predicted[k], Field::mesh_point);
+    remember(k, p[k]);
+  }
+}
+
+GridPoint VertexValues::read(ByteReader& in, const GridPoint& predicted) {
+  const size_t known_at = in.offset();
+  const uint8_t known = in.byte(Field::mesh_axes);
+  if (known > 7) in.fail("vertex axis flags " + std::to_string(known) + " above 7", known_at);
+  GridPoint p;
+  for (int k = 0; k < 3; ++k) {
+    const size_t at = in.offset();
+    if (known & (1 << k)) {
+      const int64_t rank = place_of(sorted_[k], predicted[k]) + in.varsint(Field::mesh_rank);
+      if (rank < 0 || rank >= static_cast<int64_t>(sorted_[k].size()))
+        in.fail("vertex value rank " + std::to_string(rank) + " outside the " + std::to_string(sorted_[k].size()) +
+                    " values met",
+                at);
+      p[k] = sorted_[k][static_cast<size_t>(rank)];
+    } else {
+      p[k] = predicted[k] + in.varsint(Field::mesh_point);
+      if (std::abs(static_cast<double>(p[k])) > 0x1p52) in.fail("vertex coordinate outside the grid's range", at);
+    }
+    remember(k, p[k]);
+  }
+  return p;
+}
+
+}  // namespace cadnurbs::cnb

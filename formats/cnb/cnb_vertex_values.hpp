@@ -1,0 +1,34 @@
+#pragma once
+// The coordinates of a traversal-coded mesh's vertices (docs/cnb.md, "Traversal-coded triangle mesh"),
+// on the grid q, coded against a prediction. Each axis keeps the sorted values met so far; a coordinate
+// equal to one of them is coded by its rank counted from where the prediction falls among them,
+// otherwise by its difference from the prediction. CAD parts repeat few values per axis (the 539
+// vertices of a DIP-10 tessellated within 0.005 mm take 71, 54 and 20), and the true value's rank lies
+// near the prediction's, so a repeated value costs a few bits where a difference costs ten or more.
+// Writer and reader update the tables in the same order; a table stops growing at value_table_limit
+// values (so that a mesh of a million distinct values does not cost quadratic time).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "formats/cnb/cnb_stream.hpp"
+
+namespace cadnurbs::cnb {
+
+using GridPoint = std::array<int64_t, 3>;
+
+constexpr size_t value_table_limit = 4096;
+
+class VertexValues {
+ public:
+  void write(ByteWriter& out, const GridPoint& p, const GridPoint& predicted);
+  // Refuses (PayloadError) a rank outside the table and a coordinate beyond 2^52 steps.
+  GridPoint read(ByteReader& in, const GridPoint& predicted);
+
+ private:
+  void remember(int axis, int64_t value);
+  std::array<std::vector<int64_t>, 3> sorted_;
+};
+
+}  // namespace cadnurbs::cnb
