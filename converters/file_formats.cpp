@@ -1,5 +1,6 @@
 #include "converters/file_formats.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "report/smallest_compressed_mesh.hpp"
@@ -141,20 +142,35 @@ void write_as_cnb(const std::string& path, const Scene& scene, const SceneWriteO
 // The quantisation resolutions a writer tries, coarsest first, stopping at the first within the budget.
 constexpr int kCoarsestBits = 4;
 
+// `node` without its triangle meshes whose every triangle has two corners at one position (a tiny face that a
+// coarse .cnb grid collapsed): they draw nothing, and Draco refuses a mesh of only such triangles.
+void drop_collapsed_meshes(SceneNode& node) {
+  std::erase_if(node.shapes, [](const Shape& shape) {
+    const auto* mesh = std::get_if<TriangleMesh>(&shape.geometry);
+    return mesh && std::ranges::all_of(mesh->triangles, [&](const std::array<int, 3>& t) {
+             const auto& p = mesh->positions;
+             return p[t[0]] == p[t[1]] || p[t[1]] == p[t[2]] || p[t[2]] == p[t[0]];
+           });
+  });
+  for (auto& child : node.children) drop_collapsed_meshes(child);
+}
+
 void write_as_glb(const std::string& path, const Scene& scene, const SceneWriteOptions& options) {
   const auto compression = glb_compression_named(options.compression);
   if (!compression)
     throw FileError(path + ": unknown --compress '" + options.compression + "' (none, draco, meshopt)");
   GlbOptions glb;
   glb.compression = *compression;
+  Scene drawn = scene;
+  if (glb.compression == GlbCompression::draco) drop_collapsed_meshes(drawn.root);
   std::string bytes;
   if (glb.compression == GlbCompression::none || options.quantisation_budget <= 0) {
-    bytes = write_glb(scene, glb);
+    bytes = write_glb(drawn, glb);
   } else {
     const int finest = glb.compression == GlbCompression::meshopt ? 16 : 30;
     for (glb.position_bits = kCoarsestBits; glb.position_bits <= finest; ++glb.position_bits) {
       GlbReport report;
-      bytes = write_glb(scene, glb, &report);
+      bytes = write_glb(drawn, glb, &report);
       if (report.max_position_error <= options.quantisation_budget) break;
     }
     if (glb.position_bits > finest)
