@@ -7,6 +7,7 @@
 #include "core/trimmed_surface.hpp"
 #include "formats/cnb/cnb_numbers.hpp"
 #include "formats/cnb/cnb_stream.hpp"
+#include "formats/cnb/cnb_vertex_values.hpp"
 
 namespace cadnurbs::cnb {
 
@@ -16,6 +17,10 @@ struct CodingState {
   int previous_edge = -1;
   KnotCache knots;
   WeightCache weights;
+  // Traversal-coded meshes: the values each axis has met, and the last new vertex (which predicts the
+  // corners of a mesh's starting triangles), over all the meshes so far: parts of one part repeat them.
+  VertexValues mesh_values;
+  GridPoint last_mesh_vertex{0, 0, 0};
   bool trim_extrapolation = true;  // writer only: whether faces may take the extrapolating trim predictor
 };
 
@@ -45,8 +50,8 @@ TriangleMesh read_triangle_mesh(ByteReader& in, double q);
 // (cnb_traversal_mesh_coding.cpp): decoded with the same triangles (same orientation) and vertices on the
 // grid q, in the order the traversal meets them; vertices no triangle uses are not kept.
 bool traversal_codable(const TriangleMesh& mesh);
-void write_traversal_mesh(ByteWriter& out, const TriangleMesh& mesh, double q);
-TriangleMesh read_traversal_mesh(ByteReader& in, double q);
+void write_traversal_mesh(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state);
+TriangleMesh read_traversal_mesh(ByteReader& in, double q, CodingState& state);
 void write_polygon_mesh(ByteWriter& out, const PolygonMesh& mesh, double q);
 PolygonMesh read_polygon_mesh(ByteReader& in, double q);
 

@@ -37,6 +37,35 @@ bool as_decimals(const std::vector<double>& values, int& k, std::vector<int64_t>
 
 }  // namespace
 
+void write_exact_number(ByteWriter& out, double value) {
+  int k = 0;
+  std::vector<int64_t> n;
+  if (as_decimals({value}, k, n)) {
+    out.varuint(static_cast<uint64_t>(k) + 1, Field::raw);
+    out.varsint(n[0], Field::raw);
+  } else {
+    out.varuint(0, Field::raw);
+    out.float64(value);
+  }
+}
+
+double read_exact_number(ByteReader& in) {
+  const size_t at = in.offset();
+  const uint64_t tag = in.varuint(Field::raw);
+  if (tag > 18) in.fail("decimal exponent " + std::to_string(tag - 1) + " outside 0..17", at);
+  double value;
+  if (tag == 0) {
+    value = in.float64();
+  } else {
+    const size_t n_at = in.offset();
+    const int64_t n = in.varsint(Field::raw);
+    if (std::abs(static_cast<double>(n)) >= 0x1p53) in.fail("decimal numerator out of range", n_at);
+    value = static_cast<double>(n) / std::pow(10.0, static_cast<double>(tag - 1));
+  }
+  if (!std::isfinite(value)) in.fail("a number that is not finite", at);
+  return value;
+}
+
 void KnotCache::use(size_t index) { std::rotate(recent.begin(), recent.begin() + index, recent.begin() + index + 1); }
 
 void KnotCache::add(const std::vector<double>& values) {

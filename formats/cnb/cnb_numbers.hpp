@@ -49,6 +49,12 @@ std::vector<double> read_weights(ByteReader& in, size_t point_count, WeightCache
 // How many different values `weights` holds.
 size_t distinct_count(const std::vector<double>& weights);
 
+// A float64 kept exactly, coded small where it is a short decimal (a placement's 0, ±1, -33.02): a
+// varuint k + 1 and a varsint n when n / 10^k gives it back bit for bit (the smallest such k in 0..17),
+// else 0 and the raw float64. The reader refuses a k above 17 and a value that is not finite.
+void write_exact_number(ByteWriter& out, double value);
+double read_exact_number(ByteReader& in);
+
 // Orders: refused above this before anything is allocated.
 constexpr uint64_t largest_order = 64;
 // An order (of a surface direction, a curve or a trimming curve); refuses (PayloadError) one outside

@@ -96,7 +96,7 @@ struct SceneDecoder {
     } else if (kind == 2) {
       s.geometry = read_triangle_mesh(in, q);
     } else if (kind == traversal_mesh_kind) {
-      s.geometry = read_traversal_mesh(in, q);
+      s.geometry = read_traversal_mesh(in, q, state);
     } else {
       s.geometry = read_polygon_mesh(in, q);
     }
@@ -122,17 +122,19 @@ struct SceneDecoder {
     const std::string path = parent_path.empty() ? (n.name.empty() ? "scene" : n.name) : parent_path + "/" + n.name;
     const size_t flags_at = in.offset();
     const uint8_t flags = in.byte(Field::structure);
-    if (flags & ~(node_colour_flag | node_linear_flag | node_translation_flag))
+    if (flags & ~(node_colour_flag | node_linear_flag | node_translation_flag | node_exact_numbers_flag))
       in.fail("unknown node flags " + std::to_string(flags), flags_at);
+    const bool exact_numbers = flags & node_exact_numbers_flag;
+    auto number = [&](const char* what) { return exact_numbers ? read_exact_number(in) : finite_float(what); };
     if (flags & node_colour_flag) n.colour = colour();
     if (flags & node_linear_flag) {
       const size_t at = in.offset();
       for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) n.transform.linear()(r, c) = finite_float("a transform entry");
+        for (int r = 0; r < 3; ++r) n.transform.linear()(r, c) = number("a transform entry");
       if (!(std::abs(n.transform.linear().determinant()) > 0)) in.fail("a singular transform", at);
     }
     if (flags & node_translation_flag)
-      for (int k = 0; k < 3; ++k) n.transform.translation()(k) = finite_float("a translation");
+      for (int k = 0; k < 3; ++k) n.transform.translation()(k) = number("a translation");
     const size_t shape_count = in.count(2);
     n.shapes.reserve(shape_count);
     for (size_t i = 0; i < shape_count; ++i) n.shapes.push_back(shape(path));

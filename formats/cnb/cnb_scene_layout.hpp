@@ -5,7 +5,8 @@
 namespace cadnurbs::cnb {
 
 // Node flags.
-constexpr uint8_t node_colour_flag = 1, node_linear_flag = 2, node_translation_flag = 4;
+// node_exact_numbers_flag: the transform's numbers are coded by write_exact_number, not as raw float64.
+constexpr uint8_t node_colour_flag = 1, node_linear_flag = 2, node_translation_flag = 4, node_exact_numbers_flag = 8;
 // Shape kind byte: the geometry's kind (0 trimmed surface, 1 3D curve, 2 triangle mesh, 3 polygon mesh,
 // the order of core::Geometry; 4: the same geometry as an earlier shape) in the low bits, this bit when
 // the shape has its own colour.

@@ -191,7 +191,8 @@ GridPoint parallelogram(const GridPoint& from, const GridPoint& to, const GridPo
 
 class TraversalEncoder {
  public:
-  TraversalEncoder(ByteWriter& out, const TriangleMesh& mesh, double q) : out_(out), mesh_(mesh) {
+  TraversalEncoder(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state)
+      : out_(out), mesh_(mesh), values_(state.mesh_values), last_(state.last_mesh_vertex) {
     grid_.reserve(mesh.positions.size());
     for (const auto& p : mesh.positions) grid_.push_back({on_grid(p.x(), q), on_grid(p.y(), q), on_grid(p.z(), q)});
     pair_half_edges();
@@ -307,14 +308,15 @@ class TraversalEncoder {
   int count_ = 0;
   size_t written_ = 0;
   uint8_t previous_ = new_vertex;
-  GridPoint last_{0, 0, 0};
   Border border_;
-  VertexValues values_;
+  VertexValues& values_;
+  GridPoint& last_;
 };
 
 class TraversalDecoder {
  public:
-  TraversalDecoder(ByteReader& in, double q) : in_(in), q_(q) {}
+  TraversalDecoder(ByteReader& in, double q, CodingState& state)
+      : in_(in), q_(q), values_(state.mesh_values), last_(state.last_mesh_vertex) {}
 
   TriangleMesh decode() {
     vertex_count_ = in_.count(4);
@@ -418,9 +420,9 @@ class TraversalDecoder {
   size_t vertex_count_ = 0;
   std::vector<GridPoint> grid_;
   TriangleMesh mesh_;
-  VertexValues values_;
+  VertexValues& values_;
+  GridPoint& last_;
   uint8_t previous_ = new_vertex;
-  GridPoint last_{0, 0, 0};
   Border border_;
 };
 
@@ -433,10 +435,12 @@ bool traversal_codable(const TriangleMesh& mesh) {
   return true;
 }
 
-void write_traversal_mesh(ByteWriter& out, const TriangleMesh& mesh, double q) {
-  TraversalEncoder(out, mesh, q).encode();
+void write_traversal_mesh(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state) {
+  TraversalEncoder(out, mesh, q, state).encode();
 }
 
-TriangleMesh read_traversal_mesh(ByteReader& in, double q) { return TraversalDecoder(in, q).decode(); }
+TriangleMesh read_traversal_mesh(ByteReader& in, double q, CodingState& state) {
+  return TraversalDecoder(in, q, state).decode();
+}
 
 }  // namespace cadnurbs::cnb

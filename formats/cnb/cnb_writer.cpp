@@ -59,7 +59,7 @@ struct SceneEncoder {
     } else if (const auto* c = std::get_if<NurbsCurve>(&g)) {
       write_curve(w, *c, q, st);
     } else if (const auto* m = std::get_if<TriangleMesh>(&g)) {
-      if (traversal_codable(*m)) write_traversal_mesh(w, *m, q);
+      if (traversal_codable(*m)) write_traversal_mesh(w, *m, q, st);
       else write_triangle_mesh(w, *m, q);
       report.mesh_bound = options.mesh_deviation;
     } else {
@@ -89,14 +89,15 @@ struct SceneEncoder {
     const bool translation = !n.transform.translation().isZero(0.0);
     out.text(n.name);
     out.byte(static_cast<uint8_t>((n.colour ? node_colour_flag : 0) | (linear ? node_linear_flag : 0) |
-                                  (translation ? node_translation_flag : 0)),
+                                  (translation ? node_translation_flag : 0) |
+                                  (linear || translation ? node_exact_numbers_flag : 0)),
              Field::structure);
     if (n.colour) colour(*n.colour);
     if (linear)
       for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) out.float64(n.transform.linear()(r, c));
+        for (int r = 0; r < 3; ++r) write_exact_number(out, n.transform.linear()(r, c));
     if (translation)
-      for (int k = 0; k < 3; ++k) out.float64(n.transform.translation()(k));
+      for (int k = 0; k < 3; ++k) write_exact_number(out, n.transform.translation()(k));
     out.varuint(n.shapes.size(), Field::count);
     const double scale = transform_scale(world);
     for (const auto& s : n.shapes) shape(s, scale);
