@@ -1,7 +1,8 @@
 # cmake -DCADNURBS=... -DSAMPLES=... -DCORPUS=... -DOUTPUT=... -P write_cnb_seeds.cmake: the .cnb fuzz
 # target's seeds, written by the given cadnurbs into OUTPUT (emptied first): every sample STEP file
 # (trimmed NURBS), every sample STL (meshes), and the corpus's NURBS VRML/X3D files that cadnurbs reads
-# (weights, several surfaces). Fails if one cannot be written.
+# (weights, several surfaces); each sample STEP file once more at --deviation 1 (mm), and the corpus's
+# splinecage.stp, whose bodies are written as traversal-coded meshes there. Fails if one cannot be written.
 file(REMOVE_RECURSE ${OUTPUT})
 file(MAKE_DIRECTORY ${OUTPUT})
 file(GLOB inputs ${SAMPLES}/*.step ${SAMPLES}/*.stl)
@@ -12,5 +13,15 @@ foreach(input IN LISTS inputs)
   execute_process(COMMAND ${CADNURBS} convert ${input} -o ${OUTPUT}/${name}.cnb RESULT_VARIABLE status OUTPUT_QUIET)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "write_cnb_seeds: cadnurbs convert ${input} failed (${status})")
+  endif()
+endforeach()
+file(GLOB step_inputs ${SAMPLES}/*.step)
+list(APPEND step_inputs ${CORPUS}/step/splinecage.stp)
+foreach(input IN LISTS step_inputs)
+  get_filename_component(name ${input} NAME)
+  execute_process(COMMAND ${CADNURBS} convert ${input} --deviation 1 -o ${OUTPUT}/${name}-coarse.cnb
+                  RESULT_VARIABLE status OUTPUT_QUIET)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "write_cnb_seeds: cadnurbs convert ${input} --deviation 1 failed (${status})")
   endif()
 endforeach()
