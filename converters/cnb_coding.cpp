@@ -13,7 +13,7 @@ namespace {
 constexpr double kMeshShare = 0.4;
 }  // namespace
 
-CnbCoding cnb_coding(const Scene& scene, double max_deviation) {
+CnbCoding cnb_coding(const Scene& scene, double max_deviation, bool mesh_where_cheaper) {
   CnbCoding out;
   out.options.max_deviation = max_deviation;
   out.options.trim_share = kMeshShare;
@@ -28,9 +28,12 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation) {
       return std::numeric_limits<size_t>::max();
     }
   };
-  out.scene = cheapest_coding(scene, {max_deviation, kMeshShare}, coded_bytes, &out.choice);
+  out.scene =
+      mesh_where_cheaper ? cheapest_coding(scene, {max_deviation, kMeshShare}, coded_bytes, &out.choice) : scene;
   out.options.mesh_deviation = out.choice.certified_deviation;
   out.bytes = write_cnb(out.scene, out.options, &out.written);
+  if (!mesh_where_cheaper)
+    out.choice.as_is_bytes = out.choice.per_body_bytes = out.choice.all_meshed_bytes = out.bytes.size();
   return out;
 }
 

@@ -69,6 +69,9 @@ const CommandSpec& convert_command_spec() {
       }),
       ".cnb (cadnurbs compact binary NURBS, docs/cnb.md): --deviation D is its bound (default 0.001 x the\n"
       "diagonal): control points and trims quantised so that no decoded point moves by more than D.\n"
+      "Each body (faces joined by shared edges) is written as its NURBS or as a mesh certified within\n"
+      "0.4 D, whichever the file holds in fewer bytes (--exact-nurbs: NURBS always); one line says how\n"
+      "many were meshed.\n"
       "A STEP/IGES face that cannot be written as a trimmed NURBS is written as a mesh instead;\n"
       "convert lists each such face and says how many there were.",
   };
