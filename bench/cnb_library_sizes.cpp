@@ -12,7 +12,7 @@
 // (family = the part's folder; 0 bytes and a note where a codec refused the part). Aggregate with
 // bench/cnb_library_table.py. Split a library over processes with xargs -P.
 //
-//   cnb_library_sizes [--detail] 0.01,1 PART.step...
+//   cnb_library_sizes [--detail] 0.01,1,1e-3d PART.step...   (1e-3d: 1e-3 of the part's diagonal)
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -23,6 +23,7 @@
 #include "converters/cnb_coding.hpp"
 #include "converters/file_formats.hpp"
 #include "converters/scene_preparation.hpp"
+#include "core/bounding_box.hpp"
 #include "report/smallest_compressed_mesh.hpp"
 
 using namespace cadnurbs;
@@ -38,9 +39,11 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: cnb_library_sizes [--detail] D1[,D2...] PART.step...\n");
     return 2;
   }
-  std::vector<double> deviations;
+  // D in scene units, or with a trailing 'd' a fraction of the part's bounding-box diagonal.
+  std::vector<std::pair<double, bool>> deviations;
   std::stringstream list(argv[1]);
-  for (std::string item; std::getline(list, item, ',');) deviations.push_back(std::stod(item));
+  for (std::string item; std::getline(list, item, ',');)
+    deviations.emplace_back(std::stod(item), !item.empty() && item.back() == 'd');
   MeshEncodingOptions mesh_options;
   mesh_options.measure_after_decoding = false;  // the bound is replayed and checked after decoding
   for (int i = 2; i < argc; ++i) {
@@ -54,7 +57,9 @@ int main(int argc, char** argv) {
       std::printf("%s\t%s\t\t0\t0\t0\t0\t0\t0\tread: %s\n", family.c_str(), part.c_str(), e.what());
       continue;
     }
-    for (double d : deviations) {
+    const double diagonal = scene_bounding_box(scene).diagonal().norm();
+    for (const auto& [value, relative] : deviations) {
+      const double d = relative ? value * diagonal : value;
       long cnb = 0, draco = 0, meshopt = 0;
       int bodies = 0, meshed = 0;
       double bound = 0;
