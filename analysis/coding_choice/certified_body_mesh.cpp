@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "analysis/mesh/weld_exact.hpp"
+#include "analysis/mesh/weld_vertices.hpp"
 #include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "core/geometry_error.hpp"
 #include "core/world_scale.hpp"
@@ -10,6 +10,9 @@
 namespace cadnurbs {
 
 namespace {
+
+// The share of the deviation left to welding the meshes (at most 1e-6 of their size).
+constexpr double kWeldShare = 1e-3;
 
 bool has_faces(const Scene& body) {
   for (const auto& node : body.root.children)
@@ -21,7 +24,8 @@ bool has_faces(const Scene& body) {
 
 // One node's shapes after tessellation (`tessellated`, its trimmed surfaces already meshes, in the order
 // of `original`): what the node held besides faces, then the faces merged per colour.
-std::vector<Shape> merged_per_colour(const SceneNode& original, const SceneNode& tessellated, CertifiedBodyMesh& out) {
+std::vector<Shape> merged_per_colour(const SceneNode& original, const SceneNode& tessellated, double weld_tolerance,
+                                     CertifiedBodyMesh& out) {
   std::vector<Shape> kept;
   std::vector<Shape> merged;  // one per colour, in order of first use
   for (size_t i = 0; i < original.shapes.size(); ++i) {
@@ -48,7 +52,10 @@ std::vector<Shape> merged_per_colour(const SceneNode& original, const SceneNode&
   }
   for (auto& shape : merged) {
     auto& mesh = std::get<TriangleMesh>(shape.geometry);
-    mesh = weld_exact(mesh);
+    // The compact form's polygons and the tessellated faces meet at corners equal only up to rounding.
+    WeldReport weld;
+    mesh = weld_vertices(mesh, std::min(default_weld_tolerance(mesh), weld_tolerance), &weld);
+    out.weld_move = std::max(out.weld_move, weld.largest_merge_distance);
     out.triangles += static_cast<long>(mesh.triangles.size());
     if (!mesh.triangles.empty()) kept.push_back(std::move(shape));
   }
@@ -68,23 +75,25 @@ std::optional<CertifiedBodyMesh> certified_body_mesh(const Scene& body, double m
   };
   if (!has_faces(body)) return refuse("");
   const double scale = largest_world_scale(body);
+  const double own_deviation = max_world_deviation / scale;
   TessellationReport report;
   Scene tessellated;
   try {
-    tessellated = tessellate_to_deviation(body, max_world_deviation / scale, &report);
+    tessellated = tessellate_to_deviation(body, (1 - kWeldShare) * own_deviation, &report);
   } catch (const GeometryError& error) {
     return refuse(error.what());
   }
   if (report.uncertified_triangles > 0)
     return refuse(std::to_string(report.uncertified_triangles) + " triangles not certified");
-  // The certificate is within max_world_deviation / scale: the product may exceed the bound by rounding only.
-  const double world = scale * report.certified_deviation;
+  CertifiedBodyMesh out;
+  for (size_t k = 0; k < body.root.children.size(); ++k)
+    out.shapes.push_back(
+        merged_per_colour(body.root.children[k], tessellated.root.children[k], kWeldShare * own_deviation, out));
+  // The welding's chains may move a vertex beyond the tolerance: checked.
+  const double world = scale * (report.certified_deviation + out.weld_move);
   if (world > max_world_deviation * (1 + 1e-12))
     return refuse("certified " + std::to_string(world) + " above " + std::to_string(max_world_deviation));
-  CertifiedBodyMesh out;
-  out.world_deviation = std::min(world, max_world_deviation);
-  for (size_t k = 0; k < body.root.children.size(); ++k)
-    out.shapes.push_back(merged_per_colour(body.root.children[k], tessellated.root.children[k], out));
+  out.world_deviation = std::min(world, max_world_deviation);  // above only by rounding
   return out;
 }
 
