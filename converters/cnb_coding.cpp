@@ -13,7 +13,7 @@ namespace {
 constexpr double kMeshShare = 0.4;
 }  // namespace
 
-CnbCoding cnb_coding(const Scene& scene, double max_deviation, bool mesh_where_cheaper) {
+CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exact, bool mesh_where_cheaper) {
   CnbCoding out;
   out.options.max_deviation = max_deviation;
   out.options.trim_share = kMeshShare;
@@ -29,7 +29,7 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation, bool mesh_where_c
     }
   };
   out.scene =
-      mesh_where_cheaper ? cheapest_coding(scene, {max_deviation, kMeshShare}, coded_bytes, &out.choice) : scene;
+      mesh_where_cheaper ? cheapest_coding(scene, {max_deviation, kMeshShare}, coded_bytes, &out.choice, exact) : scene;
   out.options.mesh_deviation = out.choice.certified_deviation;
   out.bytes = write_cnb(out.scene, out.options, &out.written);
   if (!mesh_where_cheaper)

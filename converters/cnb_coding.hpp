@@ -18,12 +18,15 @@ struct CnbCoding {
   std::string bytes;          // the file
 };
 
-// `max_deviation` = D > 0 in scene units. mesh_where_cheaper = false writes the scene as it is (convert
-// --exact-nurbs), the report then holding its bytes as the as-is candidate's and no body. Candidates are costed by
+// `max_deviation` = D > 0 in scene units. `exact` (may be null): the part `scene` is the compact form of
+// (compact_scene), whose every body meshed is one more candidate (cheapest_coding.hpp). mesh_where_cheaper =
+// false writes the scene as it is (convert --exact-nurbs), the report then holding its bytes as the as-is
+// candidate's and no body. Candidates are costed by
 // write_cnb with the meshes' certificate as mesh_deviation (the header states the bound), so `bytes` is the size the
 // choice was made on; a candidate the writer refuses is not chosen. Throws as write_cnb (for the scene as it is) and
 // cheapest_coding do.
-CnbCoding cnb_coding(const Scene& scene, double max_deviation, bool mesh_where_cheaper = true);
+CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exact = nullptr,
+                     bool mesh_where_cheaper = true);
 
 // How the bound of a .cnb written by cnb_coding is made up, for deviation bases: "" when no body was
 // meshed, else "; it includes the certificate X of the N bodies (F faces, P polygons) written as meshes".

@@ -206,7 +206,9 @@ ConversionResult convert_scene(const ConversionRequest& request, const LoadedInp
                       " curves have no place in " + file_extension(request.output));
   }
   if (quantises_nurbs(format) && !mesh) {  // .cnb: write_as_cnb's coding, with its report for the log
-    CnbCoding coding = cnb_coding(written, options.quantisation_budget, !request.exact_nurbs);
+    const bool compacted = format.compact && !request.exact_nurbs;
+    CnbCoding coding =
+        cnb_coding(written, options.quantisation_budget, compacted ? &source : nullptr, !request.exact_nurbs);
     if (!request.exact_nurbs) tell(log.coded, coding.choice);
     result.deviation_basis += meshed_bodies_basis(coding.choice);
     write_file_atomically(request.output, coding.bytes);

@@ -195,13 +195,14 @@ RepresentationFigures mesh_figures(const MeshFile& file, const fs::path& path, c
 }
 
 // Our binary NURBS (.cnb) of the compact form (moved by at most `tolerance`) within D, each body coded the
-// cheapest way (converters/cnb_coding: NURBS or certified mesh), as `convert --deviation D` writes it,
-// read back. The deviation is the writer's bound (formats/cnb/cnb_quantisation.hpp: control points, trims
-// and weights, and the meshes' certificate) plus the compact form's.
-void add_compact_binary(PartRecord& record, const Scene& compact, double tolerance, const Folder& folder,
-                        const std::string& stem) {
+// cheapest way (converters/cnb_coding: NURBS, or a certified mesh of it or of the part `scene`), as
+// `convert --deviation D` writes it, read back. The deviation is the writer's bound (formats/cnb/
+// cnb_quantisation.hpp: control points, trims and weights, and the meshes' certificate) plus the compact
+// form's.
+void add_compact_binary(PartRecord& record, const Scene& scene, const Scene& compact, double tolerance,
+                        const Folder& folder, const std::string& stem) {
   const fs::path path = folder.file(stem + "-compact", ".cnb");
-  const CnbCoding coding = cnb_coding(compact, record.deviation);
+  const CnbCoding coding = cnb_coding(compact, record.deviation, &scene);
   const CnbWriteReport& written = coding.written;
   write_file_atomically(path.string(), coding.bytes);
   RepresentationFigures f{"cnb", "cadnurbs binary NURBS (.cnb) within D", RepresentationKind::nurbs, 0, 0, 0, 0, 0, ""};
@@ -300,7 +301,7 @@ void add_curve(PartRecord& record, const BrepTranslation& loaded, const Scene& s
     measure_bytes(path, f);
     const MeshStorage storage = mesh_storage(read_back_mesh(path));
     record.curve.push_back({"wrl-mesh", d, f.bytes, f.gzip_bytes, storage.indexed_floats});
-    const long cnb_bytes = static_cast<long>(cnb_coding(compact, d).bytes.size());
+    const long cnb_bytes = static_cast<long>(cnb_coding(compact, d, &scene).bytes.size());
     record.curve.push_back({"cnb", d, cnb_bytes, cnb_bytes, 0});
     if (meshed.report.triangles > kCurveEncodingLimit) continue;
     try {
@@ -454,7 +455,7 @@ PartRecord measure(const std::string& input, const BrepTranslation& loaded, cons
   }
 
   if (options.simplify_mm > 0) add_simplified(record, scene, tolerance, options.simplify_mm / scene.unit.millimetres, folder, stem);
-  add_compact_binary(record, compact, tolerance, folder, stem);
+  add_compact_binary(record, scene, compact, tolerance, folder, stem);
   add_nurss(record, scene, folder, stem);
 
   const CertifiedMesh meshed = certified_mesh(loaded, scene, record.deviation);

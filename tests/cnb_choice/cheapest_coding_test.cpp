@@ -8,6 +8,7 @@
 #include <map>
 
 #include "analysis/coding_choice/scene_bodies.hpp"
+#include "analysis/compaction/compact_scene.hpp"
 #include "analysis/measure/measure_deviation.hpp"
 #include "analysis/mesh/count_boundary_edges.hpp"
 #include "analysis/mesh/scene_triangles.hpp"
@@ -147,6 +148,36 @@ TEST(CheapestCoding, DecodedCurvedSolidIsWithinDeviationAndClosed) {
   const EdgeCounts edges = count_boundary_edges(weld_exact(mesh));
   EXPECT_EQ(edges.boundary, 0);
   EXPECT_EQ(edges.non_manifold, exact.non_manifold);
+}
+
+// A SolidWorks part with pockets and holes in its compact form (planar faces as exact polygons, which meet
+// the cylinders at T-junctions), with the exact part given: every body of the exact part meshed is a candidate too, the
+// smallest of the four is returned, and where that is the exact part's mesh the file reads back closed.
+TEST(CheapestCoding, ExactPartMeshedIsACandidateAndReadsBackClosed) {
+  const Scene part = read_step(std::string(CADNURBS_SHARED_DIR) + "/corpus/step/featuretype.STEP").scene;
+  const double diagonal = scene_bounding_box(part).diagonal().norm();
+  const Scene compact = compact_scene(part, 1e-6 * diagonal);
+  ASSERT_GT(count_entities(compact).polygon_meshes, 0);
+  const double d = 2e-3 * diagonal;
+  CodingChoiceReport report;
+  const Scene chosen = cheapest_coding(compact, {d, kMeshShare}, cnb_bytes(d), &report, &part);
+  std::cout << "featuretype, compact form: as is " << report.as_is_bytes << ", per body " << report.per_body_bytes
+            << ", all meshed " << report.all_meshed_bytes << ", exact part meshed " << report.exact_meshed_bytes
+            << "\n";
+  EXPECT_EQ(report.bytes(),
+            std::min({report.as_is_bytes, report.per_body_bytes, report.all_meshed_bytes, report.exact_meshed_bytes}));
+  ASSERT_EQ(report.chosen, CodingChoiceReport::Whole::exact_meshed);
+  EXPECT_EQ(cnb_bytes(d)(chosen, report.certified_deviation), report.bytes());
+  EXPECT_EQ(count_entities(chosen).polygon_meshes, 0);
+  const TriangleMesh compact_meshed = scene_triangles(cheapest_coding(compact, {d, kMeshShare}, cnb_bytes(d)));
+  CnbOptions options;
+  options.max_deviation = d;
+  options.trim_share = kMeshShare;
+  options.mesh_deviation = report.certified_deviation;
+  const TriangleMesh decoded = scene_triangles(read_cnb(write_cnb(chosen, options), "featuretype.cnb"));
+  EXPECT_EQ(count_boundary_edges(weld_exact(decoded)).boundary, 0);
+  EXPECT_LE(measure_deviation(decoded, part).overall.max, d);
+  EXPECT_GT(count_boundary_edges(weld_exact(compact_meshed)).boundary, 0) << "the compact form's mesh is open";
 }
 
 // Node "a" holds three faces of a cube, node "b" the other three (sharing its edges), node "c" a cube of
