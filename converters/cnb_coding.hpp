@@ -13,18 +13,17 @@ namespace cadnurbs {
 struct CnbCoding {
   Scene scene;                // as written: the chosen bodies meshed
   CnbOptions options;         // D, the trim share (= the meshes' share), mesh_deviation = their certificate
-  CodingChoiceReport choice;  // what was meshed, and the three candidates' bytes
+  CodingChoiceReport choice;  // what was meshed, and the candidates' bytes
   CnbWriteReport written;     // the writer's report for `bytes`; its deviation_bound() is within D
   std::string bytes;          // the file
 };
 
 // `max_deviation` = D > 0 in scene units. `exact` (may be null): the part `scene` is the compact form of
-// (compact_scene), whose every body meshed is one more candidate (cheapest_coding.hpp). mesh_where_cheaper =
-// false writes the scene as it is (convert --exact-nurbs), the report then holding its bytes as the as-is
-// candidate's and no body. Candidates are costed by
-// write_cnb with the meshes' certificate as mesh_deviation (the header states the bound), so `bytes` is the size the
-// choice was made on; a candidate the writer refuses is not chosen. Throws as write_cnb (for the scene as it is) and
-// cheapest_coding do.
+// (compact_scene), whose every body meshed is one more candidate (cheapest_coding.hpp). Candidates are
+// costed by write_cnb with the meshes' certificate as mesh_deviation (the header states the bound), so
+// `bytes` is the size the choice was made on; a candidate the writer refuses is not chosen.
+// mesh_where_cheaper = false writes the scene as it is (convert --exact-nurbs), `choice` then holding its
+// bytes as every candidate's and no body. Throws as write_cnb (for the scene as it is) and cheapest_coding do.
 CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exact = nullptr,
                      bool mesh_where_cheaper = true);
 

@@ -4,26 +4,27 @@
 // whichever a coder writes in fewer bytes; then the whole result against "every body as it is", "every
 // body meshed" and, when the caller has it, "every body of the exact part meshed", the smallest returned.
 //
-// The exact part: the same faces before the compact rewrites (compaction/compact_scene: instances, exact
-// polygons, joined trims), whose faces share their edges exactly. Its meshes are closed where the part is,
-// while the compact form's polygons meet the tessellated faces at T-junctions and its instanced faces
-// sit in nodes of their own; and one mesh per node and colour often codes smaller (5 KiCad parts at D = 1 mm:
-// 216-587 bytes against 240-833 meshed from the compact form).
-//
 // In: a scene (any shapes, scene units) and the writer's deviation budget; the byte cost is a callback
 // (`coded_bytes(scene, mesh_deviation)`: the size of a scene as the writer would write it when told that
 // the meshes made here lie within mesh_deviation of the exact faces, world units, 0 when it holds none),
-// so that analysis does not depend on a file format. Out: the scene with the chosen bodies' trimmed surfaces and planar
-// polygons replaced by triangle meshes (certified_body_mesh.hpp: one per node and colour, welded, without corner
-// normals), the node tree, transforms, names of nodes, curves and existing meshes kept; faces' own names are not kept
-// in a meshed body. A body whose tessellation fails or leaves a triangle uncertified keeps its NURBS.
+// so that analysis does not depend on a file format. Out: the scene with the chosen bodies' trimmed
+// surfaces and planar polygons replaced by triangle meshes (certified_body_mesh.hpp: one per node and
+// colour, welded, without corner normals); the node tree, transforms, node names, curves and existing
+// meshes kept; a meshed body's faces lose their own names. A body whose tessellation fails or leaves a
+// triangle uncertified keeps its NURBS.
 //
-// Why the bound holds: each meshed body is tessellated so that its world deviation is at most
-// mesh_share·D (the certificate in its own coordinates times its nodes' largest world scale), reported as
-// CodingChoiceReport::certified_deviation; the writer adds that to the move of the quantised vertices
-// (within (1 − mesh_share)·D when the writer's trim share is mesh_share), so the decoded meshes stay within
-// D of the exact faces. A body is meshed whole or not at all, and its faces' shared edges carry
-// bit-identical vertices, so a closed body stays closed (no meshed face meets a NURBS face).
+// The exact part: the same faces before the compact rewrites (compaction/compact_scene: instances, exact
+// polygons, joined trims), sharing their edges exactly. Its meshes are closed where the part is, while
+// the compact form's polygons meet its tessellated faces at T-junctions and its instanced faces sit in
+// nodes of their own; and its one mesh per node and colour often codes smaller (5 KiCad parts at
+// D = 1 mm: 216-587 bytes against 240-833 meshed from the compact form).
+//
+// Why the bound holds: each meshed body is tessellated and welded so that its world deviation is at most
+// mesh_share·D (certificate plus welding move in its own coordinates, times its nodes' largest world
+// scale), reported as CodingChoiceReport::certified_deviation; the writer adds that to the move of the
+// quantised vertices (within (1 − mesh_share)·D when its trim share is mesh_share), so the decoded meshes
+// stay within D of the exact faces. A body is meshed whole or not at all, so no meshed face meets a NURBS
+// face along a shared edge.
 //
 // Each body is costed alone, in a scene holding just that body at its world placement (same units, so
 // the writer's quantisation grid is the same as in the whole scene). Deterministic: ties keep the NURBS,
@@ -56,9 +57,10 @@ struct CodingChoiceReport {
   size_t bytes() const;  // of the returned candidate
 };
 
-// Throws GeometryError for D <= 0 or t outside (0, 1); whatever `coded_bytes` throws.
 using CodedBytes = std::function<size_t(const Scene& scene, double mesh_deviation)>;
+
 // `exact` (may be null): the part `scene` was made from by exact rewrites within the writer's precision.
+// Throws GeometryError for D <= 0 or t outside (0, 1); whatever `coded_bytes` throws.
 Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& parameters, const CodedBytes& coded_bytes,
                       CodingChoiceReport* report = nullptr, const Scene* exact = nullptr);
 
