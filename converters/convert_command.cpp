@@ -208,10 +208,12 @@ int run_convert(const std::vector<std::string>& args, const CommandContext& cont
               << upper_extension(out) << " holds triangles only\n";
   };
   log.coded = [&](const CodingChoiceReport& r) {
+    const char* made_from[] = {"", "", "", ", meshed from the faces before compaction",
+                               ", merged into one mesh per colour"};  // CodingChoiceReport::Whole's order
     std::cout << out << ": " << r.bodies_meshed << " of " << r.bodies << " bodies (" << r.faces_meshed << " faces, "
               << r.polygons_meshed << " polygons) written as certified meshes within "
-              << number_text(r.certified_deviation, 3) << " " << unit_name << ", " << r.bytes()
-              << " bytes (NURBS as they are: " << r.as_is_bytes << ")\n";
+              << number_text(r.certified_deviation, 3) << " " << unit_name << made_from[static_cast<int>(r.chosen)]
+              << ", " << r.bytes() << " bytes (NURBS as they are: " << r.as_is_bytes << ")\n";
   };
   const ConversionResult result = convert_loaded(request, input, log);
   if (result.scene_graph) {

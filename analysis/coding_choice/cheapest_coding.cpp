@@ -7,6 +7,7 @@
 
 #include "analysis/coding_choice/certified_body_mesh.hpp"
 #include "analysis/coding_choice/scene_bodies.hpp"
+#include "analysis/mesh/merge_world_meshes.hpp"
 #include "core/geometry_error.hpp"
 
 namespace cadnurbs {
@@ -56,7 +57,8 @@ Candidate with_meshes(const Scene& scene, const SceneBodies& bodies,
 }  // namespace
 
 size_t CodingChoiceReport::bytes() const {
-  const size_t by_whole[] = {as_is_bytes, per_body_bytes, all_meshed_bytes, exact_meshed_bytes};  // Whole's order
+  const size_t by_whole[] = {as_is_bytes, per_body_bytes, all_meshed_bytes, exact_meshed_bytes,
+                             merged_meshes_bytes};  // Whole's order
   return by_whole[static_cast<int>(chosen)];
 }
 
@@ -101,12 +103,18 @@ Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& paramete
     exact_meshed.bodies_refused = exact_refused;
     exact_meshed.bytes = coded_bytes(exact_meshed.scene, exact_meshed.certified_deviation);
   }
+  Candidate merged_meshes = exact ? exact_meshed : all_meshed;
+  if (merged_meshes.bodies_meshed > 0) {
+    merged_meshes.scene = merge_world_meshes(merged_meshes.scene);
+    merged_meshes.bytes = coded_bytes(merged_meshes.scene, merged_meshes.certified_deviation);
+  }
   using Whole = CodingChoiceReport::Whole;
   Whole chosen = Whole::as_is;
   Candidate* best = &as_is;
-  for (auto [whole, candidate] : {std::pair{Whole::per_body, &per_body}, std::pair{Whole::all_meshed, &all_meshed},
-                                  std::pair{Whole::exact_meshed, &exact_meshed}})
-    if ((whole != Whole::exact_meshed || exact) && candidate->bytes < best->bytes) chosen = whole, best = candidate;
+  for (auto [whole, candidate] :
+       {std::pair{Whole::per_body, &per_body}, std::pair{Whole::all_meshed, &all_meshed},
+        std::pair{Whole::exact_meshed, &exact_meshed}, std::pair{Whole::merged_meshes, &merged_meshes}})
+    if (candidate->bytes > 0 && candidate->bytes < best->bytes) chosen = whole, best = candidate;  // 0: not made
   if (report) {
     CodingChoiceReport& r = *report;
     r = {};
@@ -123,6 +131,7 @@ Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& paramete
     r.per_body_bytes = per_body.bytes;
     r.all_meshed_bytes = all_meshed.bytes;
     r.exact_meshed_bytes = exact_meshed.bytes;
+    r.merged_meshes_bytes = merged_meshes.bytes;
   }
   return std::move(best->scene);
 }

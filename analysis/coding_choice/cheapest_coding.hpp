@@ -2,7 +2,9 @@
 // Issue 39's choice above the .cnb writer: for each body of a scene (scene_bodies.hpp: a node's shapes,
 // joined across nodes by shared model edges), the exact NURBS as they are or a certified mesh of them,
 // whichever a coder writes in fewer bytes; then the whole result against "every body as it is", "every
-// body meshed" and, when the caller has it, "every body of the exact part meshed", the smallest returned.
+// body meshed", when the caller has it "every body of the exact part meshed", and the last of those two
+// with its meshes placed in world coordinates and merged into one per colour (merge_world_meshes), the
+// smallest returned.
 //
 // In: a scene (any shapes, scene units) and the writer's deviation budget; the byte cost is a callback
 // (`coded_bytes(scene, mesh_deviation)`: the size of a scene as the writer would write it when told that
@@ -28,7 +30,7 @@
 //
 // Each body is costed alone, in a scene holding just that body at its world placement (same units, so
 // the writer's quantisation grid is the same as in the whole scene). Deterministic: ties keep the NURBS,
-// and among the whole candidates the first of as-is, per-body, all-meshed, exact-meshed wins.
+// and among the whole candidates the first in the order of CodingChoiceReport::Whole wins.
 #include <cstddef>
 #include <functional>
 
@@ -42,7 +44,7 @@ struct CodingChoiceParameters {
 };
 
 struct CodingChoiceReport {
-  enum class Whole { as_is, per_body, all_meshed, exact_meshed };
+  enum class Whole { as_is, per_body, all_meshed, exact_meshed, merged_meshes };
   Whole chosen = Whole::as_is;     // which whole candidate was returned
   int bodies = 0;                  // bodies with shapes
   int bodies_meshed = 0;           // in the returned scene
@@ -52,8 +54,9 @@ struct CodingChoiceReport {
   long polygons_meshed = 0;        // planar polygons written as triangles in the returned scene
   long triangles = 0;              // triangles of the meshes made, in the returned scene
   double certified_deviation = 0;  // largest world deviation of the meshes made (0 when none), <= t·D
-  // The whole candidates; exact_meshed_bytes is 0 when no exact part was given.
-  size_t as_is_bytes = 0, per_body_bytes = 0, all_meshed_bytes = 0, exact_meshed_bytes = 0;
+  // The whole candidates; exact_meshed_bytes is 0 when no exact part was given, merged_meshes_bytes when
+  // no body could be meshed.
+  size_t as_is_bytes = 0, per_body_bytes = 0, all_meshed_bytes = 0, exact_meshed_bytes = 0, merged_meshes_bytes = 0;
   size_t bytes() const;  // of the returned candidate
 };
 

@@ -180,6 +180,39 @@ TEST(CheapestCoding, ExactPartMeshedIsACandidateAndReadsBackClosed) {
   EXPECT_GT(count_boundary_edges(weld_exact(compact_meshed)).boundary, 0) << "the compact form's mesh is open";
 }
 
+// Ten cubes of different sizes, each in a node of its own (nothing to share as copies): every body meshed,
+// then placed in world coordinates and merged into one mesh per colour at the root, is one more candidate,
+// smaller than ten meshes and the nodes that place them; decoded, it is within D of the cubes and closed.
+TEST(CheapestCoding, MeshesMergedPerColourAreACandidate) {
+  std::vector<SceneNode> nodes;
+  for (int i = 0; i < 10; ++i) {
+    std::vector<Shape> faces = cube_faces(1.0 + 0.37 * i);
+    for (auto& shape : faces)
+      for (auto& ref : std::get<TrimmedSurface>(shape.geometry).loops[0].edges) ref.edge += 100 * i;
+    nodes.push_back({"cube " + std::to_string(i), "", Eigen::Affine3d(Eigen::Translation3d(6.0 * i, 0, 0)), {}, faces});
+  }
+  const Scene cubes = scene_of(nodes);
+  const double d = 0.05;
+  CodingChoiceReport report;
+  const Scene chosen = cheapest_coding(cubes, {d, kMeshShare}, cnb_bytes(d), &report);
+  std::cout << "ten cubes: as is " << report.as_is_bytes << ", all meshed " << report.all_meshed_bytes
+            << ", merged per colour " << report.merged_meshes_bytes << "\n";
+  EXPECT_EQ(report.bytes(),
+            std::min({report.as_is_bytes, report.per_body_bytes, report.all_meshed_bytes, report.merged_meshes_bytes}));
+  EXPECT_EQ(report.exact_meshed_bytes, 0u);
+  ASSERT_EQ(report.chosen, CodingChoiceReport::Whole::merged_meshes);
+  EXPECT_TRUE(chosen.root.children.empty());
+  EXPECT_EQ(report.bodies_meshed, 10);
+  CnbOptions options;
+  options.max_deviation = d;
+  options.trim_share = kMeshShare;
+  options.mesh_deviation = report.certified_deviation;
+  const TriangleMesh decoded = scene_triangles(read_cnb(write_cnb(chosen, options), "cubes.cnb"));
+  EXPECT_EQ(decoded.triangles.size(), 120u);
+  EXPECT_LE(measure_deviation(decoded, cubes).overall.max, d);
+  EXPECT_EQ(count_boundary_edges(weld_exact(decoded)).boundary, 0);
+}
+
 // Node "a" holds three faces of a cube, node "b" the other three (sharing its edges), node "c" a cube of
 // its own. Meshing pays in "a" and "c" only; "a" and "b" are one body, so they go together.
 TEST(CheapestCoding, NodesSharingAnEdgeAreMeshedTogetherOrNotAtAll) {
