@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
       double bound = 0;
       std::string note;
       try {
-        const CnbCoding coded = cnb_coding(compact, d);
+        const CnbCoding coded = cnb_coding(compact, d, &scene);
         cnb = static_cast<long>(coded.bytes.size());
         bodies = coded.choice.bodies;
         meshed = coded.choice.bodies_meshed;

@@ -8,8 +8,10 @@
 //  - the writer's bound is within D;
 //  - the read-back mesh (welded by position) has no longer a boundary than the compact form's own mesh
 //    (whose exact polygons meet curved faces at T-junctions; 1 % and D allowed for the sampling of an
-//    open part's rim), and where every body was written as a mesh and the part's own mesh is closed,
-//    none.
+//    open part's rim), and none where the file holds the exact part's meshes (cheapest_coding's
+//    exact_meshed or merged_meshes candidate) and the part's own mesh is closed. Non-manifold edges are
+//    counted, not refused: at a coarse D the vertex grid puts the corners of features thinner than it
+//    on one point (triangles of no area, within D), which welding then pinches.
 // Prints the sizes and what was meshed, one line per file and D.
 #include <gtest/gtest.h>
 
@@ -50,7 +52,7 @@ int trimmed_surfaces(const Scene& scene) { return static_cast<int>(count_entitie
 
 // One file written and read back: the checks above against the part's own mesh `own`.
 void check_file(const std::string& bytes, double bound, const Scene& written, const Meshed& own,
-                const Meshed& own_compact, bool all_meshed, double d, const std::string& what) {
+                const Meshed& own_compact, bool exact_meshes, double d, const std::string& what) {
   SCOPED_TRACE(what);
   EXPECT_LE(bound, d * (1 + 1e-12));
   TemporaryFolder folder;
@@ -62,14 +64,11 @@ void check_file(const std::string& bytes, double bound, const Scene& written, co
   EXPECT_EQ(back.report.uncertified_triangles, 0);
   EXPECT_LE(back.report.loops_without_area, own.report.loops_without_area);
   EXPECT_LE(back.edges.boundary_length, 1.01 * own_compact.edges.boundary_length + d);
-  if (all_meshed && own.edges.boundary == 0 && own.edges.non_manifold == 0) {
-    EXPECT_EQ(back.edges.boundary, 0);
-    EXPECT_EQ(back.edges.non_manifold, 0);
-  }
+  if (exact_meshes && own.edges.boundary == 0 && own.edges.non_manifold == 0) EXPECT_EQ(back.edges.boundary, 0);
   std::cout << what << ": " << bytes.size() << " bytes, " << read.repairs.size() << " repair lines on reading, "
-            << back.edges.boundary << " boundary edges, length " << back.edges.boundary_length << " (compact form "
-            << own_compact.edges.boundary << ", " << own_compact.edges.boundary_length << "; part "
-            << own.edges.boundary << ")\n";
+            << back.edges.boundary << " boundary edges, length " << back.edges.boundary_length << ", "
+            << back.edges.non_manifold << " non-manifold (compact form " << own_compact.edges.boundary << ", "
+            << own_compact.edges.boundary_length << "; part " << own.edges.boundary << ")\n";
 }
 
 void check_part(const Scene& scene, const std::string& name) {
@@ -83,9 +82,10 @@ void check_part(const Scene& scene, const std::string& name) {
     const std::string nurbs = write_cnb(compact, options, &as_is);
     check_file(nurbs, as_is.deviation_bound(), compact, own, own_compact, false, d,
                name + ", NURBS as they are, D = " + std::to_string(d));
-    const CnbCoding chosen = cnb_coding(compact, d);
+    const CnbCoding chosen = cnb_coding(compact, d, &scene);
+    using Whole = CodingChoiceReport::Whole;
     check_file(chosen.bytes, chosen.written.deviation_bound(), chosen.scene, own, own_compact,
-               chosen.choice.bodies_meshed == chosen.choice.bodies, d,
+               chosen.choice.chosen == Whole::exact_meshed || chosen.choice.chosen == Whole::merged_meshes, d,
                name + ", as convert writes it (" + std::to_string(chosen.choice.bodies_meshed) + " of " +
                    std::to_string(chosen.choice.bodies) + " bodies meshed), D = " + std::to_string(d));
   }
