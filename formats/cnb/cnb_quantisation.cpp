@@ -41,6 +41,23 @@ int trim_step_exponent(const NurbsSurface& surface, const CnbOptions& options, d
   return e;
 }
 
+int trim_step_exponent_keeping_loops(const std::vector<TrimLoop>& loops, int exponent) {
+  for (const auto& loop : loops) {
+    Eigen::AlignedBox2d box;
+    for (const auto& segment : loop.segments) {
+      if (const auto* curve = std::get_if<NurbsCurve>(&segment))
+        for (const auto& p : curve->points) box.extend(p.head<2>());
+      else
+        for (const auto& p : std::get<Polyline2D>(segment).points) box.extend(p);
+    }
+    if (box.isEmpty()) continue;
+    const double extent = box.sizes().minCoeff();
+    if (!(extent > 0)) continue;
+    while (exponent > -100 && std::ldexp(1.0, exponent) * loop_steps > extent) --exponent;
+  }
+  return exponent;
+}
+
 double trim_bound(const NurbsSurface& surface, int exponent, double world_scale) {
   return 2.0 * surface_derivative_bound(surface) * std::ldexp(1.0, exponent) * world_scale;
 }

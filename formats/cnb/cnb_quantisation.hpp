@@ -27,6 +27,13 @@ double point_step(const Scene& scene, const CnbOptions& options);
 // A surface with L = 0 (a point) gets 1/1024 of its domain.
 int trim_step_exponent(const NurbsSurface& surface, const CnbOptions& options, double world_scale);
 
+// e, lowered where needed so that every loop spans at least loop_steps steps in each direction (the
+// smallest extent of its control points' box, loops of no extent aside): a loop much smaller than the
+// step the bound allows would otherwise decode collapsed (no area, the face lost on reading). A finer
+// grid only tightens the bound.
+constexpr double loop_steps = 64;
+int trim_step_exponent_keeping_loops(const std::vector<TrimLoop>& loops, int exponent);
+
 // The world bound 2·L·2^e·scale of that choice.
 double trim_bound(const NurbsSurface& surface, int exponent, double world_scale);
 

@@ -52,7 +52,8 @@ struct SceneEncoder {
       const bool parallelogram = write_surface(w, t->surface, q, st, log_step);
       if (counted) ++(parallelogram ? report.parallelogram_nets : report.row_nets);
       if (counted && log_step > 0) ++report.quantised_weight_nets;
-      const int e = trim_step_exponent(t->surface, face_options, world_scale);
+      const int e =
+          trim_step_exponent_keeping_loops(t->loops, trim_step_exponent(t->surface, face_options, world_scale));
       w.varsint(e, Field::structure);
       write_trim_loops(w, t->loops, e, st);
       const double trims = t->loops.empty() ? 0.0 : trim_bound(t->surface, e, world_scale);
