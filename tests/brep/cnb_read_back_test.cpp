@@ -4,7 +4,7 @@
 // at D = 1e-2, 1e-3 and 1e-4 of the part's diagonal and at 1 mm. Each file is read back as convert reads
 // it (load_scene: the loops repaired, faces without area dropped with a line) and meshed at D:
 //  - as many trimmed surfaces as were written (nothing dropped on reading);
-//  - the mesh at D has no uncertified triangle and no more loops without area than the part itself;
+//  - the mesh at D has no more uncertified triangles and no more loops without area than the part's own;
 //  - the writer's bound is within D;
 //  - the read-back mesh (welded by position) has no longer a boundary than the compact form's own mesh
 //    (whose exact polygons meet curved faces at T-junctions; 1 % and D allowed for the sampling of an
@@ -61,7 +61,7 @@ void check_file(const std::string& bytes, double bound, const Scene& written, co
   const BrepTranslation read = load_scene(path);
   EXPECT_EQ(trimmed_surfaces(read.scene), trimmed_surfaces(written));
   const Meshed back = mesh_at(read.scene, d);
-  EXPECT_EQ(back.report.uncertified_triangles, 0);
+  EXPECT_LE(back.report.uncertified_triangles, own.report.uncertified_triangles);
   EXPECT_LE(back.report.loops_without_area, own.report.loops_without_area);
   EXPECT_LE(back.edges.boundary_length, 1.01 * own_compact.edges.boundary_length + d);
   if (exact_meshes && own.edges.boundary == 0 && own.edges.non_manifold == 0) EXPECT_EQ(back.edges.boundary, 0);
