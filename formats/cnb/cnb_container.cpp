@@ -3,6 +3,7 @@
 #include <zlib.h>
 
 #include <stdexcept>
+#include <utility>
 
 #include "formats/cnb/adaptive_arithmetic_coder.hpp"
 #include "formats/common/file_io.hpp"
@@ -70,12 +71,13 @@ class OwnedArithmeticSource : public ByteSource {
   ArithmeticDecoder decoder_;
 };
 
-std::string inflate_raw(const std::string& file, size_t size, const std::string& name) {
+// The payload of `size` bytes deflated in `file` from byte `start` to the end.
+std::string inflate_raw(const std::string& file, size_t start, size_t size, const std::string& name) {
   std::string out(size, '\0');
   z_stream z{};
   if (inflateInit2(&z, -15) != Z_OK) throw std::runtime_error("cnb: inflateInit2 failed");
-  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(file.data() + header_size));
-  z.avail_in = static_cast<uInt>(file.size() - header_size);
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(file.data() + start));
+  z.avail_in = static_cast<uInt>(file.size() - start);
   z.next_out = reinterpret_cast<Bytef*>(out.data());
   z.avail_out = static_cast<uInt>(out.size());
   int status = inflate(&z, Z_FINISH);
@@ -94,12 +96,12 @@ std::string inflate_raw(const std::string& file, size_t size, const std::string&
   inflateEnd(&z);
   if (more)
     refuse(name, 6, "the deflate stream holds more than the " + std::to_string(size) + " payload bytes the header promises");
-  if (status == Z_STREAM_END && produced == size && consumed == file.size() - header_size) return out;
+  if (status == Z_STREAM_END && produced == size && consumed == file.size() - start) return out;
   if (status == Z_STREAM_END && produced < size)
     refuse(name, 6, "the header promises " + std::to_string(size) + " payload bytes, the deflate stream holds " + std::to_string(produced));
   if (status == Z_STREAM_END)
-    refuse(name, header_size + consumed, "bytes after the end of the deflate stream");
-  refuse(name, header_size + consumed, "damaged deflate stream" + (message.empty() ? std::string() : " (" + message + ")"));
+    refuse(name, start + consumed, "bytes after the end of the deflate stream");
+  refuse(name, start + consumed, "damaged deflate stream" + (message.empty() ? std::string() : " (" + message + ")"));
 }
 
 }  // namespace
@@ -121,10 +123,12 @@ std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteRe
   std::string file(magic, 4);
   file.push_back(static_cast<char>(format_version));
   file.push_back(static_cast<char>(id));
-  put_u32(file, static_cast<uint32_t>(payload.bytes().size()));
-  put_u32(file, static_cast<uint32_t>(coded.size()));
-  // The CRC covers the first 14 header bytes and the coded payload.
-  put_u32(file, crc(coded, 0, coded.size(), crc(file, 0, 14)));
+  for (uint64_t v = payload.bytes().size();; v >>= 7) {
+    file.push_back(static_cast<char>((v & 0x7F) | (v >= 0x80 ? 0x80 : 0)));
+    if (v < 0x80) break;
+  }
+  // The CRC covers the header before it and the coded payload.
+  put_u32(file, crc(coded, 0, coded.size(), crc(file, 0, file.size())));
   file += coded;
   if (report) {
     report->payload_bytes = payload.bytes().size();
@@ -135,34 +139,68 @@ std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteRe
   return file;
 }
 
+namespace {
+
+// Where the coded bytes start and how many payload bytes they promise, with the CRC checked: version 1's
+// fixed header.
+std::pair<size_t, size_t> version_1_header(const std::string& file, const std::string& name) {
+  constexpr size_t h = version_1_header_size;
+  if (file.size() < h)
+    refuse(name, file.size(), "truncated: the header needs " + std::to_string(h) + " bytes, the file has " + std::to_string(file.size()));
+  const size_t size = get_u32(file, 6), coded = get_u32(file, 10);
+  if (file.size() - h != coded)
+    refuse(name, std::min(file.size(), h + coded),
+           (file.size() - h < coded ? "truncated: the header promises " : "damaged: the header promises ") +
+               std::to_string(coded) + " coded bytes after byte " + std::to_string(h) + ", the file has " +
+               std::to_string(file.size() - h));
+  if (crc(file, h, coded, crc(file, 0, 14)) != get_u32(file, 14))
+    refuse(name, 14, "damaged: the CRC-32 of the file does not match the one in its header");
+  return {h, size};
+}
+
+// The same for version 2: the payload size as a varuint at byte 6, then the CRC of all before it and of
+// the coded bytes, which run to the end of the file.
+std::pair<size_t, size_t> version_2_header(const std::string& file, const std::string& name) {
+  uint64_t size = 0;
+  size_t at = 6;
+  for (int shift = 0;; shift += 7, ++at) {
+    if (at >= file.size()) refuse(name, file.size(), "truncated: the file ends inside the header");
+    const uint8_t b = static_cast<uint8_t>(file[at]);
+    size |= static_cast<uint64_t>(b & 0x7F) << shift;
+    if (!(b & 0x80)) break;
+    if (shift == 28) refuse(name, 6, "damaged: the payload size is longer than 5 bytes");
+  }
+  const size_t crc_at = at + 1;
+  if (size > 0xFFFFFFFFu) refuse(name, 6, "damaged: a payload size above 4 GiB");
+  if (file.size() < crc_at + 4) refuse(name, file.size(), "truncated: the file ends inside the header");
+  if (crc(file, crc_at + 4, file.size() - crc_at - 4, crc(file, 0, crc_at)) != get_u32(file, crc_at))
+    refuse(name, crc_at, "damaged or truncated: the CRC-32 of the file does not match the one in its header");
+  return {crc_at + 4, static_cast<size_t>(size)};
+}
+
+}  // namespace
+
 OpenedPayload open_payload(const std::string& file, const std::string& name) {
   for (size_t i = 0; i < 4; ++i) {
     if (i >= file.size()) refuse(name, file.size(), "truncated: the file ends inside the magic number");
     if (file[i] != magic[i]) refuse(name, i, "not a .cnb file (the magic number is \\x89CNB)");
   }
-  if (file.size() < header_size)
-    refuse(name, file.size(), "truncated: the header needs " + std::to_string(header_size) + " bytes, the file has " + std::to_string(file.size()));
+  if (file.size() < 6) refuse(name, file.size(), "truncated: the file ends inside the header");
   const uint8_t version = static_cast<uint8_t>(file[4]);
-  if (version != format_version)
-    refuse(name, 4, "version " + std::to_string(version) + " is not one this reader knows (" + std::to_string(format_version) + ")");
-  const size_t size = get_u32(file, 6), coded = get_u32(file, 10);
-  if (file.size() - header_size != coded)
-    refuse(name, std::min(file.size(), header_size + coded),
-           (file.size() - header_size < coded ? "truncated: the header promises " : "damaged: the header promises ") +
-               std::to_string(coded) + " coded bytes after byte " + std::to_string(header_size) + ", the file has " +
-               std::to_string(file.size() - header_size));
-  const uint32_t check = crc(file, header_size, coded, crc(file, 0, 14));
-  if (check != get_u32(file, 14))
-    refuse(name, 14, "damaged: the CRC-32 of the file does not match the one in its header");
+  if (version != 1 && version != 2)
+    refuse(name, 4, "version " + std::to_string(version) + " is not one this reader knows (1, 2)");
+  const auto [start, size] = version == 1 ? version_1_header(file, name) : version_2_header(file, name);
+  const size_t coded = file.size() - start;
   const uint8_t id = static_cast<uint8_t>(file[5]);
   OpenedPayload opened;
   opened.size = size;
+  opened.version = version;
   if (id == deflate_id) {
     if (size > deflate_expansion_limit * coded + 64) refuse(name, 6, "a payload of " + std::to_string(size) + " bytes cannot come from " + std::to_string(coded) + " deflated bytes");
-    opened.source = std::make_unique<OwnedBufferSource>(inflate_raw(file, size, name));
+    opened.source = std::make_unique<OwnedBufferSource>(inflate_raw(file, start, size, name));
   } else if (id == arithmetic_id) {
     if (size > arithmetic_expansion_limit * coded + 64) refuse(name, 6, "a payload of " + std::to_string(size) + " bytes cannot come from " + std::to_string(coded) + " coded bytes");
-    opened.source = std::make_unique<OwnedArithmeticSource>(file.substr(header_size));
+    opened.source = std::make_unique<OwnedArithmeticSource>(file.substr(start));
   } else {
     refuse(name, 5, "unknown entropy coder " + std::to_string(id));
   }

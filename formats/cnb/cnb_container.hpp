@@ -9,8 +9,11 @@
 
 namespace cadnurbs::cnb {
 
-constexpr size_t header_size = 18;
-constexpr uint8_t format_version = 1;
+// Version 2 (written): magic, version, coder, the payload size as a varuint, the CRC-32, the coded bytes.
+// Version 1 (still read): a fixed 18-byte header with the coded size; its scene header's numbers are raw
+// float64 where version 2 has exact numbers (docs/cnb.md).
+constexpr size_t version_1_header_size = 18;
+constexpr uint8_t format_version = 2;
 
 // The whole file for a payload, coded as `choice` asks (the smaller of both for Coder::smallest).
 // Fills the report's size fields.
@@ -19,6 +22,7 @@ std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteRe
 struct OpenedPayload {
   std::unique_ptr<ByteSource> source;  // yields the decoded payload byte by byte
   size_t size = 0;                     // decoded payload bytes the header promises
+  uint8_t version = format_version;    // of the file: the payload's layout depends on it
 };
 
 // Checks the header, the length and the CRC before decoding anything. Throws FileError

@@ -153,11 +153,15 @@ Scene read_cnb(const std::string& bytes, const std::string& name) {
   try {
     Scene scene;
     SceneDecoder decoder{in, 0, {}, {}, 0, numbers_per_payload_byte * payload.size + numbers_allowance};
+    // Version 1 wrote the units' sizes and D as raw float64, version 2 as exact numbers.
+    auto number = [&](const char* what) {
+      return payload.version == 1 ? decoder.finite_float(what) : read_exact_number(in);
+    };
     scene.unit.name = in.text();
-    scene.unit.millimetres = decoder.finite_float("the unit's size");
+    scene.unit.millimetres = number("the unit's size");
     scene.source_unit.name = in.text();
-    scene.source_unit.millimetres = decoder.finite_float("the source unit's size");
-    decoder.finite_float("the maximum deviation");
+    scene.source_unit.millimetres = number("the source unit's size");
+    number("the maximum deviation");
     const size_t q_at = in.offset();
     decoder.q = in.float64();
     if (!(decoder.q > 0) || !std::isfinite(decoder.q)) in.fail("the grid step is not positive and finite", q_at);

@@ -121,10 +121,10 @@ std::string encode(const Scene& scene, const CnbOptions& options, bool trim_extr
   // The scene header goes first; it states the bound, known once every face's trim grid is chosen.
   ByteWriter header;
   header.text(scene.unit.name);
-  header.float64(scene.unit.millimetres);
+  write_exact_number(header, scene.unit.millimetres);
   header.text(scene.source_unit.name);
-  header.float64(scene.source_unit.millimetres);
-  header.float64(options.max_deviation);
+  write_exact_number(header, scene.source_unit.millimetres);
+  write_exact_number(header, options.max_deviation);
   header.float64(q);
   header.float64(r.deviation_bound());
   ByteWriter payload = header;

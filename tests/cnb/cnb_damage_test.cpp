@@ -4,6 +4,7 @@
 #include <zlib.h>
 
 #include "formats/cnb/cnb_container.hpp"
+#include "formats/cnb/cnb_numbers.hpp"
 #include "formats/cnb/cnb_reader.hpp"
 #include "formats/cnb/cnb_writer.hpp"
 #include "formats/common/file_io.hpp"
@@ -32,57 +33,63 @@ std::string error_of(const std::string& bytes) {
   return "(read without error)";
 }
 
-uint32_t u32_at(const std::string& s, size_t at) {
-  uint32_t v = 0;
-  for (int i = 0; i < 4; ++i) v |= static_cast<uint32_t>(static_cast<uint8_t>(s[at + i])) << (8 * i);
-  return v;
+// Where the version 2 header's CRC-32 lies: after the payload size's varuint at byte 6.
+size_t crc_offset(const std::string& file) {
+  size_t at = 6;
+  while (static_cast<uint8_t>(file[at]) & 0x80) ++at;
+  return at + 1;
 }
 
-// The file with its header CRC made right again after an edit.
-std::string with_fresh_crc(std::string file) {
-  uLong c = crc32(0L, Z_NULL, 0);
-  c = crc32(c, reinterpret_cast<const Bytef*>(file.data()), 14);
-  c = crc32(c, reinterpret_cast<const Bytef*>(file.data() + 18), static_cast<uInt>(file.size() - 18));
-  for (int i = 0; i < 4; ++i) file[14 + i] = static_cast<char>(c >> (8 * i));
-  return file;
+// The file with its payload size replaced by `size` and its CRC made right again.
+std::string with_payload_size(const std::string& file, uint64_t size) {
+  const size_t crc_at = crc_offset(file);
+  std::string out = file.substr(0, 6);
+  for (uint64_t v = size;; v >>= 7) {
+    out.push_back(static_cast<char>((v & 0x7F) | (v >= 0x80 ? 0x80 : 0)));
+    if (v < 0x80) break;
+  }
+  const std::string coded = file.substr(crc_at + 4);
+  uLong c = crc32(0L, reinterpret_cast<const Bytef*>(out.data()), static_cast<uInt>(out.size()));
+  c = crc32(c, reinterpret_cast<const Bytef*>(coded.data()), static_cast<uInt>(coded.size()));
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>(c >> (8 * i)));
+  return out + coded;
+}
+
+uint64_t payload_size(const std::string& file) {
+  uint64_t v = 0;
+  for (size_t at = 6, shift = 0;; ++at, shift += 7) {
+    v |= static_cast<uint64_t>(static_cast<uint8_t>(file[at]) & 0x7F) << shift;
+    if (!(static_cast<uint8_t>(file[at]) & 0x80)) return v;
+  }
 }
 
 TEST(CnbDamage, TruncatedFiles) {
   const std::string& file = capping_file();
-  const size_t coded = file.size() - 18;
+  const size_t crc_at = crc_offset(file);
   EXPECT_EQ(error_of(""), name + ": byte 0: truncated: the file ends inside the magic number");
   EXPECT_EQ(error_of(file.substr(0, 2)), name + ": byte 2: truncated: the file ends inside the magic number");
-  EXPECT_EQ(error_of(file.substr(0, 10)), name + ": byte 10: truncated: the header needs 18 bytes, the file has 10");
-  for (size_t cut : {size_t(18), size_t(19), file.size() / 2, file.size() - 1})
-    EXPECT_EQ(error_of(file.substr(0, cut)), name + ": byte " + std::to_string(cut) + ": truncated: the header promises " +
-                                                 std::to_string(coded) + " coded bytes after byte 18, the file has " +
-                                                 std::to_string(cut - 18));
-  EXPECT_EQ(error_of(file + "x"), name + ": byte " + std::to_string(file.size()) + ": damaged: the header promises " +
-                                      std::to_string(coded) + " coded bytes after byte 18, the file has " +
-                                      std::to_string(coded + 1));
+  for (size_t cut : {size_t(5), size_t(7), crc_at + 2})
+    EXPECT_EQ(error_of(file.substr(0, cut)), name + ": byte " + std::to_string(cut) + ": truncated: the file ends inside the header");
+  for (size_t cut : {crc_at + 4, crc_at + 5, file.size() / 2, file.size() - 1})
+    EXPECT_EQ(error_of(file.substr(0, cut)), name + ": byte " + std::to_string(crc_at) +
+                                                 ": damaged or truncated: the CRC-32 of the file does not match the one in its header");
+  EXPECT_EQ(error_of(file + "x"), name + ": byte " + std::to_string(crc_at) +
+                                      ": damaged or truncated: the CRC-32 of the file does not match the one in its header");
 }
 
-// Every byte of the file flipped in turn gives the message for the field it lies in.
+// Every byte of the file flipped in turn gives the message for the field it lies in: the magic number,
+// the version, and past them the CRC-32 (which covers the rest of the header and the coded bytes).
 TEST(CnbDamage, EveryFlippedByteIsRefused) {
   const std::string& file = capping_file();
-  const size_t coded = file.size() - 18;
-  const std::string crc_message = name + ": byte 14: damaged: the CRC-32 of the file does not match the one in its header";
+  const std::string crc_message = name + ": byte " + std::to_string(crc_offset(file)) +
+                                  ": damaged or truncated: the CRC-32 of the file does not match the one in its header";
   for (size_t at = 0; at < file.size(); ++at) {
     std::string damaged = file;
     damaged[at] = static_cast<char>(damaged[at] ^ 0x24);
     std::string expected;
-    if (at < 4) {
-      expected = name + ": byte " + std::to_string(at) + ": not a .cnb file (the magic number is \\x89CNB)";
-    } else if (at == 4) {
-      expected = name + ": byte 4: version " + std::to_string(1 ^ 0x24) + " is not one this reader knows (1)";
-    } else if (at >= 10 && at < 14) {
-      const size_t claimed = u32_at(damaged, 10);
-      expected = name + ": byte " + std::to_string(std::min(file.size(), 18 + claimed)) + ": " +
-                 (claimed > coded ? "truncated" : "damaged") + ": the header promises " + std::to_string(claimed) +
-                 " coded bytes after byte 18, the file has " + std::to_string(coded);
-    } else {
-      expected = crc_message;
-    }
+    if (at < 4) expected = name + ": byte " + std::to_string(at) + ": not a .cnb file (the magic number is \\x89CNB)";
+    else if (at == 4) expected = name + ": byte 4: version " + std::to_string(2 ^ 0x24) + " is not one this reader knows (1, 2)";
+    else expected = crc_message;
     ASSERT_EQ(error_of(damaged), expected) << "byte " << at;
   }
 }
@@ -90,27 +97,76 @@ TEST(CnbDamage, EveryFlippedByteIsRefused) {
 TEST(CnbDamage, HeaderClaimingAnImpossiblePayloadSize) {
   CnbOptions options;
   options.coder = CnbOptions::Coder::deflate;
-  std::string file = write_cnb(read_vrml(std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-end.x3dv"), options);
-  const size_t coded = file.size() - 18;
-  for (int i = 0; i < 4; ++i) file[6 + i] = '\xFF';
-  EXPECT_EQ(error_of(with_fresh_crc(file)), name + ": byte 6: a payload of 4294967295 bytes cannot come from " +
-                                                std::to_string(coded) + " deflated bytes");
+  const std::string file = write_cnb(read_vrml(std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-end.x3dv"), options);
+  const std::string huge = with_payload_size(file, 0xFFFFFFFFu);
+  const size_t coded = huge.size() - crc_offset(huge) - 4;
+  EXPECT_EQ(error_of(huge), name + ": byte 6: a payload of 4294967295 bytes cannot come from " + std::to_string(coded) +
+                                " deflated bytes");
+  EXPECT_EQ(error_of(with_payload_size(file, uint64_t(1) << 33)), name + ": byte 6: damaged: a payload size above 4 GiB");
   // One byte fewer than the stream holds.
-  std::string shorter = write_cnb(read_vrml(std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-end.x3dv"), options);
-  const uint32_t size = u32_at(shorter, 6) - 1;
-  for (int i = 0; i < 4; ++i) shorter[6 + i] = static_cast<char>(size >> (8 * i));
-  EXPECT_EQ(error_of(with_fresh_crc(shorter)),
+  const uint64_t size = payload_size(file) - 1;
+  EXPECT_EQ(error_of(with_payload_size(file, size)),
             name + ": byte 6: the deflate stream holds more than the " + std::to_string(size) + " payload bytes the header promises");
 }
 
-// A payload's scene header (unit mm, D = q = bound = 1) and the root node's name and flags.
-cnb::ByteWriter scene_header_and_root() {
+// A file of format version 1 (an 18-byte header with the coded size, float64 numbers in the scene
+// header), as earlier writers made them, still reads: one triangle.
+TEST(CnbDamage, VersionOneFilesStillRead) {
   cnb::ByteWriter w;
   w.text("mm");
   w.float64(1.0);
+  w.text("in");
+  w.float64(25.4);
+  for (double v : {0.1, 0.1, 0.0866}) w.float64(v);  // D, q, bound
+  w.text("part");
+  w.byte(0);                        // node flags
+  w.varuint(1, cnb::Field::count);  // one shape
+  w.byte(2);                        // a triangle mesh
+  w.text("t");
+  w.varuint(3, cnb::Field::count);
+  for (int c : {0, 0, 0, 10, 0, 0, -10, 10, 0}) w.varsint(c, cnb::Field::point);  // (0,0,0) (1,0,0) (0,1,0)
+  w.varuint(1, cnb::Field::count);
+  for (int d : {0, 1, 1}) w.varsint(d, cnb::Field::index);
+  w.byte(0);                        // no normals
+  w.varuint(0, cnb::Field::count);  // no children
+  std::string deflated(compressBound(static_cast<uLong>(w.bytes().size())) + 16, '\0');
+  z_stream z{};
+  ASSERT_EQ(deflateInit2(&z, 9, Z_DEFLATED, -15, 9, Z_DEFAULT_STRATEGY), Z_OK);
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(w.bytes().data()));
+  z.avail_in = static_cast<uInt>(w.bytes().size());
+  z.next_out = reinterpret_cast<Bytef*>(deflated.data());
+  z.avail_out = static_cast<uInt>(deflated.size());
+  ASSERT_EQ(deflate(&z, Z_FINISH), Z_STREAM_END);
+  deflated.resize(z.total_out);
+  deflateEnd(&z);
+  std::string file = std::string("\x89" "CNB", 4) + '\x01' + '\x01';
+  for (uint32_t v : {static_cast<uint32_t>(w.bytes().size()), static_cast<uint32_t>(deflated.size())})
+    for (int i = 0; i < 4; ++i) file.push_back(static_cast<char>(v >> (8 * i)));
+  uLong c = crc32(0L, reinterpret_cast<const Bytef*>(file.data()), 14);
+  c = crc32(c, reinterpret_cast<const Bytef*>(deflated.data()), static_cast<uInt>(deflated.size()));
+  for (int i = 0; i < 4; ++i) file.push_back(static_cast<char>(c >> (8 * i)));
+  file += deflated;
+  const Scene scene = read_cnb(file, name);
+  EXPECT_EQ(scene.source_unit.name, "in");
+  EXPECT_EQ(scene.source_unit.millimetres, 25.4);
+  ASSERT_EQ(scene.root.shapes.size(), 1u);
+  const auto& mesh = std::get<TriangleMesh>(scene.root.shapes[0].geometry);
+  ASSERT_EQ(mesh.positions.size(), 3u);
+  EXPECT_EQ(mesh.positions[1], Eigen::Vector3d(1.0, 0, 0));
+  EXPECT_EQ(mesh.positions[2], Eigen::Vector3d(0, 1.0, 0));
+  EXPECT_EQ(mesh.triangles.at(0), (std::array<int, 3>{0, 1, 2}));
+}
+
+// A payload's scene header (unit mm, D = q = bound = 1; version 2: sizes and D as exact numbers) and the
+// root node's name and flags.
+cnb::ByteWriter scene_header_and_root() {
+  cnb::ByteWriter w;
   w.text("mm");
-  w.float64(1.0);
-  for (int i = 0; i < 3; ++i) w.float64(1.0);
+  cnb::write_exact_number(w, 1.0);
+  w.text("mm");
+  cnb::write_exact_number(w, 1.0);
+  cnb::write_exact_number(w, 1.0);
+  for (int i = 0; i < 2; ++i) w.float64(1.0);
   w.text("");
   w.byte(0);
   return w;
