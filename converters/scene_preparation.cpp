@@ -54,11 +54,25 @@ double default_deviation(double diagonal, const std::string& in) {
   return 1e-3 * diagonal;
 }
 
+namespace {
+// Whether some trimming loop of `scene` names a shared model edge.
+bool names_shared_edges(const Scene& scene) {
+  bool named = false;
+  for_each_shape(scene, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
+    if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry))
+      for (const auto& loop : t->loops)
+        for (const auto& ref : loop.edges) named = named || ref.edge >= 0;
+  });
+  return named;
+}
+}  // namespace
+
 CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, double max_deviation,
                              bool check_face_areas) {
   CertifiedMesh result;
   const SceneCounts counts = count_entities(scene);
-  result.sewn = loaded.face_count == 0 && counts.surfaces + counts.polygon_meshes > 0;
+  result.sewn = loaded.face_count == 0 && counts.surfaces + counts.polygon_meshes > 0 &&
+                (counts.polygon_meshes > 0 || !names_shared_edges(scene));
   if (result.sewn) {
     result.sewing_tolerance = sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), max_deviation);
     result.faces = sew_faces(scene, result.sewing_tolerance, &result.sewing);
