@@ -15,6 +15,17 @@ namespace {
 
 using namespace cnb;
 
+// A trimmed surface record: the net, the trim grid's exponent, the loops.
+Geometry read_trimmed_surface(ByteReader& in, double q, CodingState& state) {
+  TrimmedSurface t;
+  t.surface = read_surface(in, q, state);
+  const size_t e_at = in.offset();
+  const int64_t e = in.varsint(Field::structure);
+  if (e < -100 || e > 100) in.fail("trim grid exponent " + std::to_string(e) + " outside -100..100", e_at);
+  t.loops = read_trim_loops(in, static_cast<int>(e), state);
+  return t;
+}
+
 struct SceneDecoder {
   ByteReader& in;
   double q = 0;
@@ -41,7 +52,9 @@ struct SceneDecoder {
     numbers += n;
     if (numbers > number_budget)
       in.fail("the scene would hold more than " + std::to_string(number_budget) + " numbers (" +
-                  std::to_string(numbers_per_payload_byte) + " per payload byte and " + std::to_string(numbers_allowance) + ")", at);
+                  std::to_string(numbers_per_payload_byte) + " per payload byte and " +
+                  std::to_string(numbers_allowance) + ")",
+              at);
   }
 
   Colour colour() {
@@ -62,6 +75,17 @@ struct SceneDecoder {
     return v;
   }
 
+  // The geometry of each shape kind but the repeat (cnb_scene_layout.hpp), by kind.
+  using GeometryReader = Geometry (*)(ByteReader&, double, CodingState&);
+  static constexpr GeometryReader geometry_readers[] = {
+      read_trimmed_surface,
+      [](ByteReader& in, double q, CodingState& state) -> Geometry { return read_curve(in, q, state); },
+      [](ByteReader& in, double q, CodingState&) -> Geometry { return read_triangle_mesh(in, q); },
+      [](ByteReader& in, double q, CodingState&) -> Geometry { return read_polygon_mesh(in, q); },
+      nullptr,  // repeated_shape_kind: handled before
+      [](ByteReader& in, double q, CodingState& state) -> Geometry { return read_traversal_mesh(in, q, state); },
+  };
+
   std::vector<Geometry> geometries;  // of every shape so far, for repeated ones
   size_t numbers = 0, number_budget = 0;
 
@@ -77,30 +101,17 @@ struct SceneDecoder {
       const size_t at = in.offset();
       const uint64_t back = in.varuint(Field::index);
       if (back >= geometries.size())
-        in.fail("a repeat of shape " + std::to_string(back + 1) + " back, with " + std::to_string(geometries.size()) + " before it", at);
+        in.fail("a repeat of shape " + std::to_string(back + 1) + " back, with " + std::to_string(geometries.size()) +
+                    " before it",
+                at);
       s.geometry = geometries[geometries.size() - 1 - back];
       count_numbers(s.geometry, at);
       geometries.push_back(s.geometry);
       return s;
     }
-    if (kind == 0) {
-      TrimmedSurface t;
-      t.surface = read_surface(in, q, state);
-      const size_t e_at = in.offset();
-      const int64_t e = in.varsint(Field::structure);
-      if (e < -100 || e > 100) in.fail("trim grid exponent " + std::to_string(e) + " outside -100..100", e_at);
-      t.loops = read_trim_loops(in, static_cast<int>(e), state);
-      s.geometry = std::move(t);
-    } else if (kind == 1) {
-      s.geometry = read_curve(in, q, state);
-    } else if (kind == 2) {
-      s.geometry = read_triangle_mesh(in, q);
-    } else if (kind == traversal_mesh_kind) {
-      s.geometry = read_traversal_mesh(in, q, state);
-    } else {
-      s.geometry = read_polygon_mesh(in, q);
-    }
-    const std::string entity = path + "/" + (s.name.empty() ? "shape at decoded byte " + std::to_string(start) : s.name);
+    s.geometry = geometry_readers[kind](in, q, state);
+    const std::string entity =
+        path + "/" + (s.name.empty() ? "shape at decoded byte " + std::to_string(start) : s.name);
     try {
       // Loops keep whatever closure they had when written; their closure is not this reader's to judge.
       if (const auto* t = std::get_if<TrimmedSurface>(&s.geometry))
