@@ -38,10 +38,10 @@ Scene merge_world_meshes(const Scene& scene) {
       colours.push_back(colour);
       merged.emplace_back();
     }
-    TriangleMesh& into = merged[k];
-    const int first = static_cast<int>(into.positions.size());
-    for (const auto& p : mesh->positions) into.positions.push_back(world * p);
-    for (const auto& t : mesh->triangles) into.triangles.push_back({first + t[0], first + t[1], first + t[2]});
+    TriangleMesh placed;
+    placed.triangles = mesh->triangles;
+    for (const auto& p : mesh->positions) placed.positions.push_back(world * p);
+    append(merged[k], placed);
   });
   Scene out;
   out.unit = scene.unit;

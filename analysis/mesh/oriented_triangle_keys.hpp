@@ -1,7 +1,8 @@
 #pragma once
 // Triangles compared by where their corners are, whatever the vertex numbering: each triangle becomes
-// its three corner positions (9 numbers), rotated so that the lexicographically smallest corner comes
-// first (the orientation is kept), and the list is sorted. Two meshes hold the same oriented triangles at
+// its three corner positions (9 numbers), in the rotation that is lexicographically smallest (the
+// orientation is kept; with two corners at one place this still names one rotation), and the list is
+// sorted. Two meshes hold the same oriented triangles at
 // the same places exactly when their keys are equal; codecs that renumber vertices and reorder
 // triangles (Draco, .cnb's traversal coding) are checked this way.
 #include <array>

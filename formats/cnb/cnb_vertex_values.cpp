@@ -13,23 +13,27 @@ int64_t place_of(const std::vector<int64_t>& sorted, int64_t value) {
 }
 }  // namespace
 
-void VertexValues::remember(int axis, int64_t value) {
+void VertexValues::remember(int axis, int64_t value, int64_t place) {
   auto& sorted = sorted_[axis];
-  const auto at = std::lower_bound(sorted.begin(), sorted.end(), value);
-  if (sorted.size() < value_table_limit && (at == sorted.end() || *at != value)) sorted.insert(at, value);
+  const bool listed = place < static_cast<int64_t>(sorted.size()) && sorted[static_cast<size_t>(place)] == value;
+  if (!listed && sorted.size() < value_table_limit) sorted.insert(sorted.begin() + place, value);
 }
 
 void VertexValues::write(ByteWriter& out, const GridPoint& p, const GridPoint& predicted) {
+  GridPoint place;
   uint8_t known = 0;
-  for (int k = 0; k < 3; ++k)
-    if (std::binary_search(sorted_[k].begin(), sorted_[k].end(), p[k])) known |= static_cast<uint8_t>(1 << k);
+  for (int k = 0; k < 3; ++k) {
+    place[k] = place_of(sorted_[k], p[k]);
+    if (place[k] < static_cast<int64_t>(sorted_[k].size()) && sorted_[k][static_cast<size_t>(place[k])] == p[k])
+      known |= static_cast<uint8_t>(1 << k);
+  }
   out.byte(known, Field::mesh_axes);
   for (int k = 0; k < 3; ++k) {
     if (known & (1 << k))
-      out.varsint(place_of(sorted_[k], p[k]) - place_of(sorted_[k], predicted[k]), Field::mesh_rank);
+      out.varsint(place[k] - place_of(sorted_[k], predicted[k]), Field::mesh_rank);
     else
       out.varsint(p[k] - predicted[k], Field::mesh_point);
-    remember(k, p[k]);
+    remember(k, p[k], place[k]);
   }
 }
 
@@ -47,11 +51,12 @@ GridPoint VertexValues::read(ByteReader& in, const GridPoint& predicted) {
                     " values met",
                 at);
       p[k] = sorted_[k][static_cast<size_t>(rank)];
+      remember(k, p[k], rank);
     } else {
       p[k] = predicted[k] + in.varsint(Field::mesh_point);
       if (std::abs(static_cast<double>(p[k])) > 0x1p52) in.fail("vertex coordinate outside the grid's range", at);
+      remember(k, p[k], place_of(sorted_[k], p[k]));
     }
-    remember(k, p[k]);
   }
   return p;
 }

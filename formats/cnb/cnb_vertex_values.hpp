@@ -27,7 +27,8 @@ class VertexValues {
   GridPoint read(ByteReader& in, const GridPoint& predicted);
 
  private:
-  void remember(int axis, int64_t value);
+  // Adds `value` to the axis's table at `place` (where lower_bound puts it) unless it is listed there.
+  void remember(int axis, int64_t value, int64_t place);
   std::array<std::vector<int64_t>, 3> sorted_;
 };
 

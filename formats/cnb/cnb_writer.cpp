@@ -29,7 +29,8 @@ struct SceneEncoder {
   CodingState state;
 
   void colour(const Colour& c) {
-    for (double v : {c.r, c.g, c.b}) out.varuint(static_cast<uint64_t>(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0)), Field::raw);
+    for (double v : {c.r, c.g, c.b})
+      out.varuint(static_cast<uint64_t>(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0)), Field::raw);
   }
 
   // Canonical bytes of each geometry written so far (coded from a fresh state, so equal geometry gives
@@ -37,8 +38,9 @@ struct SceneEncoder {
   std::unordered_map<std::string, size_t> written;
   size_t shape_count = 0;
 
-  // The geometry record; with `counted`, the predictor choice goes into the report.
-  void geometry(ByteWriter& w, const Geometry& g, double world_scale, CodingState& st, bool counted) {
+  // The geometry record of kind `kind` (geometry_kind of g); with `counted`, the predictor choice goes into
+  // the report.
+  void geometry(ByteWriter& w, const Geometry& g, uint8_t kind, double world_scale, CodingState& st, bool counted) {
     if (const auto* t = std::get_if<TrimmedSurface>(&g)) {
       // A face that quantises its weights gives them half of its trim share.
       CnbOptions face_options = options;
@@ -61,8 +63,10 @@ struct SceneEncoder {
     } else if (const auto* c = std::get_if<NurbsCurve>(&g)) {
       write_curve(w, *c, q, st);
     } else if (const auto* m = std::get_if<TriangleMesh>(&g)) {
-      if (traversal_codable(*m)) write_traversal_mesh(w, *m, q, st);
-      else write_triangle_mesh(w, *m, q);
+      if (kind == traversal_mesh_kind)
+        write_traversal_mesh(w, *m, q, st);
+      else
+        write_triangle_mesh(w, *m, q);
       report.mesh_bound = options.mesh_deviation;
     } else {
       write_polygon_mesh(w, std::get<PolygonMesh>(g), q);
@@ -74,14 +78,17 @@ struct SceneEncoder {
     ByteWriter canonical;
     CodingState fresh;
     fresh.trim_extrapolation = state.trim_extrapolation;
-    geometry(canonical, s.geometry, world_scale, fresh, false);
+    const uint8_t kind = geometry_kind(s.geometry);
+    geometry(canonical, s.geometry, kind, world_scale, fresh, false);
     const auto [earlier, is_new] = written.emplace(canonical.bytes(), shape_count);
-    const uint8_t kind = is_new ? geometry_kind(s.geometry) : repeated_shape_kind;
-    out.byte(static_cast<uint8_t>(kind | (s.colour ? has_colour_flag : 0)), Field::structure);
+    out.byte(static_cast<uint8_t>((is_new ? kind : repeated_shape_kind) | (s.colour ? has_colour_flag : 0)),
+             Field::structure);
     out.text(s.name);
     if (s.colour) colour(*s.colour);
-    if (is_new) geometry(out, s.geometry, world_scale, state, true);
-    else out.varuint(shape_count - 1 - earlier->second, Field::index);
+    if (is_new)
+      geometry(out, s.geometry, kind, world_scale, state, true);
+    else
+      out.varuint(shape_count - 1 - earlier->second, Field::index);
     ++shape_count;
   }
 
@@ -131,12 +138,18 @@ std::string encode(const Scene& scene, const CnbOptions& options, bool trim_extr
   payload.append(encoder.out);
   for (uint8_t context : payload.contexts()) {
     const int field = context / 2;
-    if (field >= field_count) r.float_bytes++;
-    else if (field == static_cast<int>(Field::point) || field == static_cast<int>(Field::mesh_point)) r.point_bytes++;
-    else if (field == static_cast<int>(Field::trim)) r.trim_bytes++;
-    else if (field == static_cast<int>(Field::knot)) r.knot_bytes++;
-    else if (field == static_cast<int>(Field::weight)) r.weight_bytes++;
-    else r.other_bytes++;
+    if (field >= field_count)
+      r.float_bytes++;
+    else if (field == static_cast<int>(Field::point) || field == static_cast<int>(Field::mesh_point))
+      r.point_bytes++;
+    else if (field == static_cast<int>(Field::trim))
+      r.trim_bytes++;
+    else if (field == static_cast<int>(Field::knot))
+      r.knot_bytes++;
+    else if (field == static_cast<int>(Field::weight))
+      r.weight_bytes++;
+    else
+      r.other_bytes++;
   }
   return pack(payload, options.coder, &r);
 }
