@@ -20,7 +20,7 @@ double positive_root(double q, double c, double r) {
 }
 
 // Which Bezier patches (i + j * (u_breaks.size() - 1)) the trimmed region reaches: a loop passes
-// through the patch, or its centre is inside the loops.
+// through the patch's inside, or its centre is inside the loops.
 std::vector<char> patches_in_region(const std::vector<double>& ub, const std::vector<double>& vb,
                                     const std::vector<std::vector<Eigen::Vector2d>>& polys) {
   const int nu = static_cast<int>(ub.size()) - 1, nv = static_cast<int>(vb.size()) - 1;
@@ -36,9 +36,14 @@ std::vector<char> patches_in_region(const std::vector<double>& ub, const std::ve
       const Eigen::Vector2d& b = poly[(k + 1) % poly.size()];
       const int i0 = cell_of(ub, std::min(a.x(), b.x())), i1 = cell_of(ub, std::max(a.x(), b.x()));
       const int j0 = cell_of(vb, std::min(a.y(), b.y())), j1 = cell_of(vb, std::max(a.y(), b.y()));
+      // The patch's inside, less 1e-9 of it: a loop along its edge (a trim on a knot line, or an ulp past
+      // it) does not reach it, for its curvature is not the face's (hammer.iges: 2.2e-15 into a patch 0.003
+      // wide whose curvature made the face want 4096 cells across).
       for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i)
-          if (segment_meets_box(a, b, ub[i], ub[i + 1], vb[j], vb[j + 1])) used[i + j * nu] = 1;
+        for (int i = i0; i <= i1; ++i) {
+          const double mu = 1e-9 * (ub[i + 1] - ub[i]), mv = 1e-9 * (vb[j + 1] - vb[j]);
+          if (segment_meets_box(a, b, ub[i] + mu, ub[i + 1] - mu, vb[j] + mv, vb[j + 1] - mv)) used[i + j * nu] = 1;
+        }
     }
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i)
@@ -56,10 +61,11 @@ struct PatchSteps {
 // capacitor's twisted ruled faces. 0.06 keeps that below about 0.05 %.
 constexpr double kTwistTurn = 0.06;
 
-// The cells patch [u0, u0 + hu] x [v0, v0 + hv] wants so that its FMM estimate is `target`, and so that
+// The cells patch [u0, u1] x [v0, v1] wants so that its FMM estimate is `target`, and so that
 // along a straight direction of a twisted patch the normal turns by at most kTwistTurn per cell.
-PatchSteps patch_steps(const SurfaceEvaluator& e, double u0, double hu, double v0, double hv, double target) {
-  const PatchCurvature k = sample_patch_curvature(e, u0, hu, v0, hv);
+PatchSteps patch_steps(const SurfaceEvaluator& e, double u0, double u1, double v0, double v1, double target) {
+  const PatchCurvature k = sample_patch_curvature(e, u0, u1, v0, v1);
+  const double hu = u1 - u0, hv = v1 - v0;
   const double muu = k.uu, muv = k.uv, mvv = k.vv, turn_u = k.turn_u, turn_v = k.turn_v;
   // One-step errors of the cell in each direction, and the mixed term.
   const double a = muu * hu * hu / 8, b = mvv * hv * hv / 8, c = 2 * muv * hu * hv / 8;
@@ -141,7 +147,7 @@ TessellationGrid plan_tessellation_grid(const SurfaceEvaluator& surface, const S
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
       if (!used[i + j * nu]) continue;
-      const PatchSteps wanted = patch_steps(surface, ub[i], ub[i + 1] - ub[i], vb[j], vb[j + 1] - vb[j], target);
+      const PatchSteps wanted = patch_steps(surface, ub[i], ub[i + 1], vb[j], vb[j + 1], target);
       steps_u[i] = std::max(steps_u[i], wanted.u);
       steps_v[j] = std::max(steps_v[j], wanted.v);
     }

@@ -190,7 +190,7 @@ SurfaceModel surface_model(const NurbsSurface& surface) {
   for (size_t j = 0; j + 1 < vb.size(); ++j)
     for (size_t i = 0; i + 1 < ub.size(); ++i) {
       const tessellation::PatchCurvature k =
-          tessellation::sample_patch_curvature(evaluator, ub[i], ub[i + 1] - ub[i], vb[j], vb[j + 1] - vb[j]);
+          tessellation::sample_patch_curvature(evaluator, ub[i], ub[i + 1], vb[j], vb[j + 1]);
       model.m.uu = std::max(model.m.uu, k.uu);
       model.m.uv = std::max(model.m.uv, k.uv);
       model.m.vv = std::max(model.m.vv, k.vv);

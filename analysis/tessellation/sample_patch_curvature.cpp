@@ -8,13 +8,14 @@
 
 namespace cadnurbs::tessellation {
 
-PatchCurvature sample_patch_curvature(const SurfaceEvaluator& e, double u0, double hu, double v0, double hv) {
+PatchCurvature sample_patch_curvature(const SurfaceEvaluator& e, double u0, double u1, double v0, double v1) {
   PatchCurvature out;
   double fuu = 0, fuv = 0, fvv = 0;  // whole second derivatives, for a patch without any normal
   bool any_normal = false;
+  auto at = [](double start, double end, int k) { return k < 3 ? start + (end - start) * k / 3 : std::nextafter(end, start); };
   for (int b = 0; b <= 3; ++b)
     for (int a = 0; a <= 3; ++a) {
-      const SurfaceJet jet = e.jet(u0 + hu * a / 3, v0 + hv * b / 3, 2);
+      const SurfaceJet jet = e.jet(at(u0, u1, a), at(v0, v1, b), 2);
       out.su = std::max(out.su, jet.su.norm()), out.sv = std::max(out.sv, jet.sv.norm());
       fuu = std::max(fuu, jet.suu.norm()), fuv = std::max(fuv, jet.suv.norm()), fvv = std::max(fvv, jet.svv.norm());
       // Points without a normal (poles) are skipped.

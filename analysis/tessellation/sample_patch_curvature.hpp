@@ -3,7 +3,7 @@
 // tessellator's grid planning (grid_planning.hpp) and the viewer hints (plan_tessellation_hints.hpp)
 // learn how many steps a span needs.
 //
-// In: the surface and a rectangle [u0, u0 + hu] x [v0, v0 + hv] (a Bezier patch, or a span of one). Out:
+// In: the surface and a rectangle [u0, u1] x [v0, v1] (a Bezier patch, or a span of one). Out:
 // the largest normal components of the second derivatives (the second fundamental form: tangential
 // acceleration moves points within the surface and costs no deviation), the normal's turning rate along
 // a straight direction, and the largest |S_u| and |S_v| — each the largest over a 4 x 4 lattice of the
@@ -28,6 +28,9 @@ struct PatchCurvature {
   double su = 0, sv = 0;  // largest |S_u| and |S_v|
 };
 
-PatchCurvature sample_patch_curvature(const SurfaceEvaluator& surface, double u0, double hu, double v0, double hv);
+// The patch [u0, u1] x [v0, v1], its far edges sampled an ulp inside: at a knot value the evaluator takes
+// the next patch's derivatives (hammer.iges: one 0.003 wide beyond a face's edge, whose derivatives made the
+// face's patch want 4096 cells across). The ends are given, not a width: u0 + (u1 - u0) may round past u1.
+PatchCurvature sample_patch_curvature(const SurfaceEvaluator& surface, double u0, double u1, double v0, double v1);
 
 }  // namespace cadnurbs::tessellation

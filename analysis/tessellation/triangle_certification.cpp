@@ -75,6 +75,14 @@ bool meets_c0_line(const SurfaceDeviationBound& bound, const Eigen::Vector2d& a,
   return meets(bound.c0_u, 0) || meets(bound.c0_v, 1);
 }
 
+// Narrows [lo, hi] to the C0 lines on either side of x, the piece's inside.
+void between_lines(const std::vector<double>& lines, double x, double& lo, double& hi) {
+  const auto above = std::upper_bound(lines.begin(), lines.end(), x);
+  if (above != lines.end()) hi = std::min(hi, *above);
+  if (above != lines.begin()) lo = std::max(lo, *(above - 1));
+  lo = std::min(lo, hi);
+}
+
 }  // namespace
 
 TriangleVerdict certify_triangle(SurfacePointCache& e, const SurfaceDeviationBound& bound, const MeshCorner& A,
@@ -107,10 +115,19 @@ TriangleVerdict certify_triangle(SurfacePointCache& e, const SurfaceDeviationBou
     const std::array<Barycentric, 3>& piece = *it;
     Eigen::Vector2d corner[3];
     for (int k = 0; k < 3; ++k) corner[k] = piece[k][0] * A.uv + piece[k][1] * B.uv + piece[k][2] * C.uv;
-    const auto m = bound.over(std::min({corner[0].x(), corner[1].x(), corner[2].x()}),
-                              std::max({corner[0].x(), corner[1].x(), corner[2].x()}),
-                              std::min({corner[0].y(), corner[1].y(), corner[2].y()}),
-                              std::max({corner[0].y(), corner[1].y(), corner[2].y()}));
+    double u0 = std::min({corner[0].x(), corner[1].x(), corner[2].x()});
+    double u1 = std::max({corner[0].x(), corner[1].x(), corner[2].x()});
+    double v0 = std::min({corner[0].y(), corner[1].y(), corner[2].y()});
+    double v1 = std::max({corner[0].y(), corner[1].y(), corner[2].y()});
+    if (is_cut) {
+      // A piece lies between two neighbouring C0 lines; its corners on a line are interpolated and may
+      // stray an ulp across it, which would bring in the patch beyond (hammer.iges: a patch 0.003 wide
+      // with second derivatives 70 times its neighbour's, beyond a trimmed face's edge).
+      const Eigen::Vector2d centre = (corner[0] + corner[1] + corner[2]) / 3.0;
+      between_lines(bound.c0_u, centre.x(), u0, u1);
+      between_lines(bound.c0_v, centre.y(), v0, v1);
+    }
+    const auto m = bound.over(u0, u1, v0, v1);
     const double whole = triangle_deviation_bound(corner[0], corner[1], corner[2], m);
     // The rigorous bound alone may do (flat or nearly flat pieces): no sampling then. A piece's corners
     // on a C0 line are points of the crease, which may lie far off the triangle's plane (a chord cutting
