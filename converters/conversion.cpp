@@ -209,7 +209,7 @@ ConversionResult convert_scene(const ConversionRequest& request, const LoadedInp
     const bool compacted = format.compact && !request.exact_nurbs;
     CnbCoding coding =
         cnb_coding(written, options.quantisation_budget, compacted ? &source : nullptr, !request.exact_nurbs);
-    if (!request.exact_nurbs) tell(log.coded, coding.choice);
+    tell(log.coded, coding);
     result.deviation_basis += meshed_bodies_basis(coding.choice);
     write_file_atomically(request.output, coding.bytes);
     written = std::move(coding.scene);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "analysis/coding_choice/cheapest_coding.hpp"
+#include "converters/cnb_coding.hpp"
 #include "converters/file_formats.hpp"
 #include "converters/scene_preparation.hpp"
 #include "core/length_unit.hpp"
@@ -66,7 +67,7 @@ struct ConversionLog {
   std::function<void(const CertifiedMesh&)> sewn;           // a mesh of a file that named no edges
   std::function<void(const CompactReport&)> compacted;      // compact NURBS output
   std::function<void(int curves)> curves_dropped;           // NURBS curves a triangles-only format cannot hold
-  std::function<void(const CodingChoiceReport&)> coded;     // .cnb: the bodies written as certified meshes
+  std::function<void(const CnbCoding&)> coded;              // .cnb: the bodies written as certified meshes
   // Once written: the scene as handed to the writer, and what the conversion returns.
   std::function<void(const Scene&, const ConversionResult&)> written;
 };

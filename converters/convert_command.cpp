@@ -207,13 +207,23 @@ int run_convert(const std::vector<std::string>& args, const CommandContext& cont
     std::cerr << in << ": " << curves << " NURBS curve" << (curves == 1 ? "" : "s") << " left out: "
               << upper_extension(out) << " holds triangles only\n";
   };
-  log.coded = [&](const CodingChoiceReport& r) {
+  log.coded = [&](const CnbCoding& coding) {
+    const double scale = coding.options.quantisation_scale;
+    const std::string sewn =
+        scale < 1 ? "; control points and trims quantised for D/" + number_text(1 / scale, 3) +
+                        ", so that its faces, sewn again on reading, stay joined"
+                  : "";
+    if (request.exact_nurbs) {
+      if (!sewn.empty()) std::cout << out << ": " << coding.bytes.size() << " bytes" << sewn << "\n";
+      return;
+    }
+    const CodingChoiceReport& r = coding.choice;
     const char* made_from[] = {"", "", "", ", meshed from the faces before compaction",
                                ", merged into one mesh per colour"};  // CodingChoiceReport::Whole's order
     std::cout << out << ": " << r.bodies_meshed << " of " << r.bodies << " bodies (" << r.faces_meshed << " faces, "
               << r.polygons_meshed << " polygons) written as certified meshes within "
               << number_text(r.certified_deviation, 3) << " " << unit_name << made_from[static_cast<int>(r.chosen)]
-              << ", " << r.bytes() << " bytes (NURBS as they are: " << r.as_is_bytes << ")\n";
+              << ", " << r.bytes() << " bytes (NURBS as they are: " << r.as_is_bytes << ")" << sewn << "\n";
   };
   const ConversionResult result = convert_loaded(request, input, log);
   if (result.scene_graph) {

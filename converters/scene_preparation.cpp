@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "analysis/measure/measure_deviation.hpp"
 #include "analysis/mesh/scene_triangles.hpp"
@@ -55,24 +56,30 @@ double default_deviation(double diagonal, const std::string& in) {
 }
 
 namespace {
-// Whether some trimming loop of `scene` names a shared model edge.
+// Whether two faces of `scene` name the same model edge in their trimming loops. (OCCT names every edge of
+// an IGES file's faces, but each face has its own, a seam aside: such a scene names no shared edge.)
 bool names_shared_edges(const Scene& scene) {
-  bool named = false;
+  std::unordered_map<int, const Shape*> first_face;
+  bool shared = false;
   for_each_shape(scene, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
     if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry))
       for (const auto& loop : t->loops)
-        for (const auto& ref : loop.edges) named = named || ref.edge >= 0;
+        for (const auto& ref : loop.edges)
+          if (ref.edge >= 0) shared = first_face.emplace(ref.edge, &shape).first->second != &shape || shared;
   });
-  return named;
+  return shared;
 }
 }  // namespace
+
+bool sewn_when_meshed(const Scene& scene) {
+  const SceneCounts counts = count_entities(scene);
+  return counts.surfaces + counts.polygon_meshes > 0 && (counts.polygon_meshes > 0 || !names_shared_edges(scene));
+}
 
 CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, double max_deviation,
                              bool check_face_areas) {
   CertifiedMesh result;
-  const SceneCounts counts = count_entities(scene);
-  result.sewn = loaded.face_count == 0 && counts.surfaces + counts.polygon_meshes > 0 &&
-                (counts.polygon_meshes > 0 || !names_shared_edges(scene));
+  result.sewn = loaded.face_count == 0 && sewn_when_meshed(scene);
   if (result.sewn) {
     result.sewing_tolerance = sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), max_deviation);
     result.faces = sew_faces(scene, result.sewing_tolerance, &result.sewing);

@@ -50,6 +50,10 @@ struct CertifiedMesh {
 CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, double max_deviation,
                              bool check_face_areas = false);
 
+// Whether certified_mesh sews `scene` when it comes from a file that names no edges (such as .cnb): it has
+// NURBS faces or polygon sets, and polygon sets or no shared-edge numbers.
+bool sewn_when_meshed(const Scene& scene);
+
 // convert --simplify D: the scene with knots removed (simplify_scene) and what certifies it.
 //  - Repeated parts are first placed as exact copies (instance_repeats at `written_tolerance`, as the
 //    compact writer would), so that every copy loses the same knots and is still written once.

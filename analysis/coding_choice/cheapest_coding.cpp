@@ -72,7 +72,10 @@ Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& paramete
   const SceneBodies bodies = scene_bodies(scene);
   const size_t n = bodies.bodies.size();
   int refused = 0;
-  const auto meshes = body_meshes(scene, bodies, t * d, refused);
+  // Bodies that may meet along unnamed edges are not meshed one by one (per body, every body meshed, and
+  // their merge then equal the scene as it is).
+  const auto meshes = parameters.bodies_named ? body_meshes(scene, bodies, t * d, refused)
+                                              : std::vector<std::optional<CertifiedBodyMesh>>(n);
   std::vector<bool> cheaper_meshed(n, false), meshable(n, false);
   for (size_t i = 0; i < n; ++i) {
     if (!meshes[i]) continue;

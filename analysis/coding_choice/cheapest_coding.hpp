@@ -41,6 +41,10 @@ namespace cadnurbs {
 struct CodingChoiceParameters {
   double max_deviation = 1.0;  // D > 0, world, scene units: the writer's bound
   double mesh_share = 0.4;     // t in (0, 1): meshes are certified within t·D (the writer's trim share)
+  // false: the scene's bodies may meet along edges its loops do not name (polygon sets, or a file naming no
+  // shared edges, which a reader sews): meshes made of them would not join there, so of the candidates
+  // only the scene as it is and the exact part's meshes (with `exact`) are made.
+  bool bodies_named = true;
 };
 
 struct CodingChoiceReport {

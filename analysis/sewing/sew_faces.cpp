@@ -46,6 +46,7 @@ void sew_group(std::vector<SewFace>& faces, const std::vector<int>& members, con
       ++report.point_pieces;
     } else if (uses[e] < 2) {
       ++report.open_pieces;
+      for (size_t k = 1; k < p.points.size(); ++k) report.open_length += (p.points[k] - p.points[k - 1]).norm();
     } else {
       if (edge_id[e] < 0) edge_id[e] = static_cast<int>(report.shared_edges++);
       const int first = first_use[e];

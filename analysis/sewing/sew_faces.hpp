@@ -51,6 +51,7 @@ struct SewingReport {
   long shared_edges = 0;      // edge ids given: groups of two or more coinciding pieces
   long sewn_pieces = 0;       // pieces that got an edge id
   long open_pieces = 0;       // pieces that run along nothing else (the model's open boundary)
+  double open_length = 0;     // their length (of their sample polygons)
   long point_pieces = 0;      // pieces whose 3D image is a point (poles)
   long cuts = 0;              // pieces cut at a vertex of another face (step 3)
   double widest_gap = 0;      // the widest tolerance of step 5 that matched pieces (0: none needed)

@@ -17,6 +17,12 @@ struct CnbOptions {
   // like control points, so their share of the bound is this plus the vertices' move; the caller keeps
   // it within trim_share·D.
   double mesh_deviation = 0.0;
+  // In (0, 1]: control points, trims and rounded weights are quantised as for quantisation_scale·D (the
+  // meshes' certificate is unchanged). Two faces' boundaries may part by up to twice their move; a reader
+  // that has to sew the file (one naming no edges, or holding polygon sets: converters/scene_preparation)
+  // does so at D/4, so convert takes the largest scale that leaves its decoded scene as sewn as the scene
+  // itself (converters/cnb_coding).
+  double quantisation_scale = 1.0;
   // The entropy stage: the smaller of deflate and the adaptive arithmetic coder, or one of them.
   enum class Coder { smallest, deflate, arithmetic } coder = Coder::smallest;
 };

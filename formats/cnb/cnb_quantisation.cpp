@@ -16,12 +16,15 @@ void check(const CnbOptions& o) {
   if (!(o.trim_share > 0 && o.trim_share < 1)) throw std::invalid_argument("cnb: trim_share must lie in (0, 1)");
   if (!(o.mesh_deviation >= 0 && o.mesh_deviation <= o.trim_share * o.max_deviation))
     throw std::invalid_argument("cnb: mesh_deviation must lie in [0, trim_share * max_deviation]");
+  if (!(o.quantisation_scale > 0 && o.quantisation_scale <= 1))
+    throw std::invalid_argument("cnb: quantisation_scale must lie in (0, 1]");
 }
 }  // namespace
 
 double point_step(const Scene& scene, const CnbOptions& options) {
   check(options);
-  return 2.0 * (1.0 - options.trim_share) * options.max_deviation / (std::sqrt(3.0) * largest_world_scale(scene));
+  return 2.0 * (1.0 - options.trim_share) * options.max_deviation * options.quantisation_scale /
+         (std::sqrt(3.0) * largest_world_scale(scene));
 }
 
 int trim_step_exponent(const NurbsSurface& surface, const CnbOptions& options, double world_scale) {
@@ -29,7 +32,7 @@ int trim_step_exponent(const NurbsSurface& surface, const CnbOptions& options, d
   const double bound = surface_derivative_bound(surface) * std::max(world_scale, 1e-300);
   double step;
   if (bound > 0.0 && std::isfinite(bound)) {
-    step = options.trim_share * options.max_deviation / (2.0 * bound);
+    step = options.trim_share * options.max_deviation * options.quantisation_scale / (2.0 * bound);
   } else {
     const double domain = std::max(surface.u_end() - surface.u_start(), surface.v_end() - surface.v_start());
     step = domain > 0 ? domain / 1024.0 : 1.0;

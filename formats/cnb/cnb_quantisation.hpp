@@ -7,6 +7,7 @@
 // was of the originals, and so moves by at most the largest control point move (the convex-hull
 // property). Mesh vertices move by the same. In world coordinates the move is scaled by the largest
 // singular value of the shape's world transform, so q = 2·(1 - trim_share)·D / (√3·largest scale).
+// (D here and below is max_deviation·quantisation_scale: a writer asked to move boundaries less.)
 //
 // Trimming curves: per face a grid of step s = 2^e in (u,v). A trim point moves by at most s per
 // coordinate (s/2 rounding, plus up to s/2 where a segment's start is snapped onto the previous end so
@@ -20,7 +21,7 @@
 
 namespace cadnurbs::cnb {
 
-// q as above. Throws std::invalid_argument for D or trim_share out of range.
+// q as above. Throws std::invalid_argument for D, trim_share or quantisation_scale out of range.
 double point_step(const Scene& scene, const CnbOptions& options);
 
 // e as above, for a face whose world transform scales by at most `world_scale`; clamped to [-100, 100].

@@ -48,7 +48,8 @@ struct SceneEncoder {
       if (quantises_weights(t->surface)) {
         face_options.trim_share = options.trim_share / 2;
         face_options.mesh_deviation = 0;  // the meshes' share is the whole trim share, checked once for the file
-        log_step = weight_log_step(t->surface, face_options.trim_share * options.max_deviation, world_scale);
+        log_step = weight_log_step(t->surface, face_options.trim_share * options.max_deviation * options.quantisation_scale,
+                                   world_scale);
         weights_bound = weight_bound(t->surface, log_step, world_scale);
       }
       const bool parallelogram = write_surface(w, t->surface, q, st, log_step);

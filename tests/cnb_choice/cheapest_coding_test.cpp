@@ -180,6 +180,27 @@ TEST(CheapestCoding, ExactPartMeshedIsACandidateAndReadsBackClosed) {
   EXPECT_GT(count_boundary_edges(weld_exact(compact_meshed)).boundary, 0) << "the compact form's mesh is open";
 }
 
+// The same compact form, told that its bodies may meet along edges its loops do not name (its polygon sets
+// name none): meshes of its own bodies would not join the NURBS beside them, so none is made, and the
+// choice is between the NURBS as they are and the exact part's meshes.
+TEST(CheapestCoding, BodiesThatMayMeetUnnamedAreNotMeshedOneByOne) {
+  const Scene part = read_step(std::string(CADNURBS_SHARED_DIR) + "/corpus/step/featuretype.STEP").scene;
+  const double diagonal = scene_bounding_box(part).diagonal().norm();
+  const Scene compact = compact_scene(part, 1e-6 * diagonal);
+  const double d = 2e-3 * diagonal;
+  CodingChoiceReport named, unnamed;
+  cheapest_coding(compact, {d, kMeshShare}, cnb_bytes(d), &named, &part);
+  const Scene chosen = cheapest_coding(compact, {d, kMeshShare, false}, cnb_bytes(d), &unnamed, &part);
+  EXPECT_NE(named.per_body_bytes, named.as_is_bytes) << "some bodies are cheaper meshed";
+  EXPECT_EQ(unnamed.per_body_bytes, unnamed.as_is_bytes);
+  EXPECT_EQ(unnamed.all_meshed_bytes, unnamed.as_is_bytes);
+  EXPECT_EQ(unnamed.exact_meshed_bytes, named.exact_meshed_bytes);
+  EXPECT_TRUE(unnamed.chosen == CodingChoiceReport::Whole::as_is ||
+              unnamed.chosen == CodingChoiceReport::Whole::exact_meshed ||
+              unnamed.chosen == CodingChoiceReport::Whole::merged_meshes);
+  if (unnamed.bodies_meshed > 0) EXPECT_EQ(count_entities(chosen).surfaces, 0);
+}
+
 // Ten cubes of different sizes, each in a node of its own (nothing to share as copies): every body meshed,
 // then placed in world coordinates and merged into one mesh per colour at the root, is one more candidate,
 // smaller than ten meshes and the nodes that place them; decoded, it is within D of the cubes and closed.

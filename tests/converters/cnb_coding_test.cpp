@@ -1,0 +1,56 @@
+// cnb_coding's quantisation scale (issue 39): a scene whose reader sews it before meshing (no shared-edge
+// numbers: IGES faces each with their own edges) is written fine enough that, read back and meshed as
+// `convert X.cnb --mesh` meshes it, it is as closed as the scene itself.
+#include "converters/cnb_coding.hpp"
+
+#include <gtest/gtest.h>
+
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/mesh/weld_exact.hpp"
+#include "converters/file_formats.hpp"
+#include "converters/scene_preparation.hpp"
+#include "core/bounding_box.hpp"
+#include "formats/cnb/cnb_reader.hpp"
+#include "formats/cnb/cnb_writer.hpp"
+
+namespace cadnurbs {
+namespace {
+
+EdgeCounts meshed_as_read(const Scene& scene, double d, TessellationReport& report) {
+  BrepTranslation no_brep;
+  const CertifiedMesh meshed = certified_mesh(no_brep, scene, d);
+  report = meshed.report;
+  return count_boundary_edges(weld_exact(scene_triangles(meshed.meshes)));
+}
+
+TEST(CnbCoding, AFileTheReaderSewsIsQuantisedFineEnoughToStayClosed) {
+  // wing.iges: four faces that OCCT gives an edge each of their own; sewn, they close.
+  const Scene wing = read_scene(std::string(CADNURBS_SHARED_DIR) + "/corpus/iges/wing.iges");
+  ASSERT_TRUE(sewn_when_meshed(wing));
+  const double d = 1e-3 * scene_bounding_box(wing).diagonal().norm();
+  TessellationReport own_report, report;
+  const EdgeCounts own = meshed_as_read(wing, d, own_report);
+  ASSERT_EQ(own.boundary, 0);
+
+  const CnbCoding coding = cnb_coding(wing, d, nullptr, false);
+  EXPECT_LT(coding.options.quantisation_scale, 1.0);
+  EXPECT_LE(coding.written.deviation_bound(), d);
+  const EdgeCounts back = meshed_as_read(read_cnb(coding.bytes, "wing.cnb"), d, report);
+  EXPECT_EQ(back.boundary, 0);
+  EXPECT_EQ(report.uncertified_triangles, 0);
+
+  // Quantised for D itself, the decoded faces part by more than sewing bridges at D/4.
+  CnbOptions at_d = coding.options;
+  at_d.quantisation_scale = 1;
+  EXPECT_GT(meshed_as_read(read_cnb(write_cnb(wing, at_d), "wing.cnb"), d, report).boundary, 0);
+}
+
+TEST(CnbCoding, AFileNamingItsSharedEdgesIsQuantisedForD) {
+  const Scene screw = read_scene(std::string(CADNURBS_SHARED_DIR) + "/corpus/step/screw.step");
+  ASSERT_FALSE(sewn_when_meshed(screw));
+  EXPECT_EQ(cnb_coding(screw, 0.01, nullptr, false).options.quantisation_scale, 1.0);
+}
+
+}  // namespace
+}  // namespace cadnurbs
