@@ -5,6 +5,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "analysis/mesh/count_boundary_edges.hpp"
+#include "analysis/mesh/scene_triangles.hpp"
+#include "analysis/mesh/weld_exact.hpp"
 #include "analysis/sewing/sew_faces.hpp"
 #include "converters/scene_preparation.hpp"
 #include "core/bounding_box.hpp"
@@ -18,31 +21,51 @@ namespace {
 // The share of D that trims (in (u,v)) and meshes (their certificate) may use; points get the rest.
 constexpr double kMeshShare = 0.4;
 
+// How a scene meshes as convert meshes a .cnb of it (certified_mesh: sewn first where it sews).
+struct MeshedAsRead {
+  long uncertified = 0;
+  int unshared = 0;
+  double open_length = 0;
+};
+
+MeshedAsRead meshed_as_read(const Scene& scene, double d) {
+  const CertifiedMesh meshed = certified_mesh(BrepTranslation{}, scene, d);
+  return {meshed.report.uncertified_triangles, meshed.report.unshared_edge_uses,
+          count_boundary_edges(weld_exact(scene_triangles(meshed.meshes))).boundary_length};
+}
+
 // The quantisation scale of the header's rule for `scene` (written with `options`).
 double scale_keeping_sewn(const Scene& scene, const CnbOptions& options) {
   if (!sewn_when_meshed(scene)) return 1.0;
   const double d = options.max_deviation;
   const SewingTolerance tolerance = sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), d);
-  SewingReport own;
-  sew_faces(scene, tolerance, &own);
   // Last, boundaries moved by at most half the tolerance within which sewing merges vertices first.
   const double safe = std::min(0.125, 0.5 * tolerance.first / d);
-  std::vector<double> scales{1.0, 0.5, 0.25, 0.125};
-  if (safe < scales.back()) scales.push_back(safe);
-  for (double scale : scales) {
+  auto written = [&](double scale) {
     CnbOptions trial = options;
     trial.quantisation_scale = scale;
-    SewingReport decoded;
+    return read_cnb(write_cnb(scene, trial), "the scene as written");
+  };
+  SewingReport own;
+  sew_faces(scene, tolerance, &own);
+  for (double scale : {1.0, 0.5, 0.25, 0.125}) {
+    if (scale <= safe) break;
     try {
-      sew_faces(read_cnb(write_cnb(scene, trial), "the scene as written"), tolerance, &decoded);
-    } catch (const std::invalid_argument&) {
-      continue;  // the writer refuses this scale; a finer one may do
+      const Scene decoded = written(scale);
+      SewingReport sewn;
+      sew_faces(decoded, tolerance, &sewn);
+      if (sewn.open_length > 1.01 * own.open_length + d ||
+          sewn.open_pieces > own.open_pieces + (own.open_pieces + 99) / 100)
+        continue;
+      // Sewn alike; meshed alike too? (Only once: a mesh of pieces sewn across moved vertices can take
+      // minutes, so a failure goes straight to the safe scale.)
+      const MeshedAsRead mine = meshed_as_read(scene, d), back = meshed_as_read(decoded, d);
+      const bool alike = back.uncertified <= mine.uncertified && back.unshared <= mine.unshared &&
+                         back.open_length <= 1.01 * mine.open_length + d;
+      return alike ? scale : safe;
+    } catch (const std::exception&) {
+      continue;  // the writer refuses this scale, or its file does not mesh; a finer one may do
     }
-    // Open pieces are counted too: pieces sewn only at the widest gaps may mesh wildly however short the
-    // boundary left (hammer.iges at 41 mm, 1/8: 19 open pieces against none).
-    if (decoded.open_length <= 1.01 * own.open_length + d &&
-        decoded.open_pieces <= own.open_pieces + (own.open_pieces + 99) / 100)
-      return scale;
   }
   return safe;
 }

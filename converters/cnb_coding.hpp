@@ -22,13 +22,15 @@ struct CnbCoding {
 // The quantisation scale: a file that its reader sews before meshing (sewn_when_meshed: polygon sets, or no
 // shared-edge numbers, as from IGES and VRML) is sewn at D/4, while the quantisation at D may part two faces'
 // edges by up to 2 D. So such a scene is written at the largest scale of 1, 1/2, 1/4 and 1/8 whose decoded
-// file, sewn as certified_mesh sews it for a mesh at D, leaves no longer a boundary open, in no more pieces,
-// than the scene itself sewn the same way (1% allowed, and D of length: sampled); else at the scale that
-// moves every boundary by at most half the tolerance within which sewing first merges vertices and cuts
-// pieces (1e-5 of the diagonal), so that it finds the scene's own vertices. hammer.iges at 1 mm: 127 open
-// pieces at 1, 48 at 1/2, 4 (the part's own) at 1/4, for 7,169 bytes instead of 6,450; at 1e-3 of its
-// diagonal (41 mm) 1/8 still left 19 open pieces (the exact faces: 0), and meshing them took 268,430
-// triangles, 6,339 of them uncertified; at 1/200, 1,128 triangles, none uncertified.
+// file sews (at D/4, as certified_mesh does) with no longer an open boundary in no more pieces than the
+// scene itself (1% allowed, and D of length), if that file also meshes at D as convert meshes it with no
+// more uncertified triangles, no more unshared edge uses and no longer an open boundary than the scene;
+// else at the scale that moves every boundary by at most half the tolerance within which sewing first
+// merges vertices (1e-5 of the diagonal), so that it finds the scene's own vertices. The mesh is checked
+// because sewing alone reported wing.iges's compact form closed at 1/4 and 1/8, where its mesh had 28 open
+// edges, then 23,988 uncertified triangles; only the first scale that sews alike is meshed, since such
+// meshes can take minutes. hammer.iges at 1 mm takes 1/4 (7,168 bytes instead of 6,450; 4 open pieces,
+// the part's own, instead of 127).
 //
 // `max_deviation` = D > 0 in scene units. `exact` (may be null): the part `scene` is the compact form of
 // (compact_scene), whose every body meshed is one more candidate (cheapest_coding.hpp). Candidates are

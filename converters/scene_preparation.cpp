@@ -56,18 +56,24 @@ double default_deviation(double diagonal, const std::string& in) {
 }
 
 namespace {
-// Whether two faces of `scene` name the same model edge in their trimming loops. (OCCT names every edge of
-// an IGES file's faces, but each face has its own, a seam aside: such a scene names no shared edge.)
+// Whether the scene's trimming loops say which faces meet where: every face is trimmed, every loop names a
+// model edge for each of its segments, and two faces name the same edge. (OCCT names every edge of an IGES
+// file's faces, but each face has its own, a seam aside; compaction's untrimmed faces and joined trims
+// name none.)
 bool names_shared_edges(const Scene& scene) {
   std::unordered_map<int, const Shape*> first_face;
-  bool shared = false;
+  bool every_loop = true, shared = false;
   for_each_shape(scene, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
-    if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry))
-      for (const auto& loop : t->loops)
+    if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry)) {
+      every_loop = every_loop && !t->loops.empty();  // a domain's sides name nothing
+      for (const auto& loop : t->loops) {
+        every_loop = every_loop && loop.edges.size() == loop.segments.size();
         for (const auto& ref : loop.edges)
           if (ref.edge >= 0) shared = first_face.emplace(ref.edge, &shape).first->second != &shape || shared;
+      }
+    }
   });
-  return shared;
+  return every_loop && shared;
 }
 }  // namespace
 

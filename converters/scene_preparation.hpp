@@ -51,7 +51,8 @@ CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, 
                              bool check_face_areas = false);
 
 // Whether certified_mesh sews `scene` when it comes from a file that names no edges (such as .cnb): it has
-// NURBS faces or polygon sets, and polygon sets or no shared-edge numbers.
+// NURBS faces or polygon sets, and polygon sets, or an untrimmed face, or a loop without edge numbers, or
+// no edge number that two faces share.
 bool sewn_when_meshed(const Scene& scene);
 
 // convert --simplify D: the scene with knots removed (simplify_scene) and what certifies it.
