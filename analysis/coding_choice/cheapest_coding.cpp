@@ -104,10 +104,12 @@ Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& paramete
     const auto exact_meshes = body_meshes(*exact, exact_bodies, t * d, exact_refused);
     exact_meshed = with_meshes(*exact, exact_bodies, exact_meshes, std::vector<bool>(exact_meshes.size(), true));
     exact_meshed.bodies_refused = exact_refused;
-    exact_meshed.bytes = coded_bytes(exact_meshed.scene, exact_meshed.certified_deviation);
+    // Bodies kept as NURBS beside meshed ones may meet them along edges nobody named: not made then.
+    if (parameters.bodies_named || exact_refused == 0)
+      exact_meshed.bytes = coded_bytes(exact_meshed.scene, exact_meshed.certified_deviation);
   }
   Candidate merged_meshes = exact ? exact_meshed : all_meshed;
-  if (merged_meshes.bodies_meshed > 0) {
+  if (merged_meshes.bodies_meshed > 0 && (merged_meshes.bytes > 0 || !exact)) {
     merged_meshes.scene = merge_world_meshes(merged_meshes.scene);
     merged_meshes.bytes = coded_bytes(merged_meshes.scene, merged_meshes.certified_deviation);
   }

@@ -43,7 +43,8 @@ struct CodingChoiceParameters {
   double mesh_share = 0.4;     // t in (0, 1): meshes are certified within t·D (the writer's trim share)
   // false: the scene's bodies may meet along edges its loops do not name (polygon sets, or a file naming no
   // shared edges, which a reader sews): meshes made of them would not join there, so of the candidates
-  // only the scene as it is and the exact part's meshes (with `exact`) are made.
+  // only the scene as it is and the exact part's meshes (with `exact`, when none of its bodies was
+  // refused) are made.
   bool bodies_named = true;
 };
 
