@@ -34,24 +34,20 @@ MeshedAsRead meshed_as_read(const Scene& scene, double d) {
           count_boundary_edges(weld_exact(scene_triangles(meshed.meshes))).boundary_length};
 }
 
-// The quantisation scale of the header's rule for `scene` (written with `options`).
+// The quantisation scale of the header's rule for `scene` (written with `options`), a scene the reader sews.
 double scale_keeping_sewn(const Scene& scene, const CnbOptions& options) {
-  if (!sewn_when_meshed(scene)) return 1.0;
   const double d = options.max_deviation;
   const SewingTolerance tolerance = sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), d);
   // Last, boundaries moved by at most half the tolerance within which sewing merges vertices first.
   const double safe = std::min(0.125, 0.5 * tolerance.first / d);
-  auto written = [&](double scale) {
-    CnbOptions trial = options;
-    trial.quantisation_scale = scale;
-    return read_cnb(write_cnb(scene, trial), "the scene as written");
-  };
   SewingReport own;
   sew_faces(scene, tolerance, &own);
   for (double scale : {1.0, 0.5, 0.25, 0.125}) {
     if (scale <= safe) break;
     try {
-      const Scene decoded = written(scale);
+      CnbOptions trial = options;
+      trial.quantisation_scale = scale;
+      const Scene decoded = read_cnb(write_cnb(scene, trial), "the scene as written");
       SewingReport sewn;
       sew_faces(decoded, tolerance, &sewn);
       if (sewn.open_length > 1.01 * own.open_length + d ||
@@ -76,7 +72,8 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exac
   CnbCoding out;
   out.options.max_deviation = max_deviation;
   out.options.trim_share = kMeshShare;
-  const double scale = scale_keeping_sewn(scene, out.options);
+  const bool sewn = sewn_when_meshed(scene);
+  const double scale = sewn ? scale_keeping_sewn(scene, out.options) : 1.0;
   auto options_for = [&](const Scene& s) {  // meshes alone are not sewn on reading
     CnbOptions options = out.options;
     options.quantisation_scale = sewn_when_meshed(s) ? scale : 1.0;
@@ -102,7 +99,7 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exac
     exact = &sewn_exact;
   }
   out.scene =
-      mesh_where_cheaper ? cheapest_coding(scene, {max_deviation, kMeshShare, !sewn_when_meshed(scene)}, coded_bytes,
+      mesh_where_cheaper ? cheapest_coding(scene, {max_deviation, kMeshShare, !sewn}, coded_bytes,
                                            &out.choice, exact) : scene;
   out.options = options_for(out.scene);
   out.options.mesh_deviation = out.choice.certified_deviation;
