@@ -49,9 +49,22 @@ TriangleMesh read_triangle_mesh(ByteReader& in, double q);
 // A triangle mesh without corner normals and without triangles that repeat a vertex, coded by a traversal
 // (cnb_traversal_mesh_coding.cpp): decoded with the same triangles (same orientation) and vertices on the
 // grid q, in the order the traversal meets them; vertices no triangle uses are not kept.
+// With `members` (one per triangle, in [0, member_count)): the mesh is a group's union and each triangle's
+// member is coded after it; the reader then fills `members` in decoded order.
 bool traversal_codable(const TriangleMesh& mesh);
-void write_traversal_mesh(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state);
-TriangleMesh read_traversal_mesh(ByteReader& in, double q, CodingState& state);
+void write_traversal_mesh(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state,
+                          const std::vector<int>* members = nullptr);
+TriangleMesh read_traversal_mesh(ByteReader& in, double q, CodingState& state, int member_count = 0,
+                                 std::vector<int>* members = nullptr);
+// Several traversal-codable meshes of one node coded as one (cnb_mesh_group_coding.cpp): their vertices
+// on one grid point joined across meshes (never within one), so that meshes meeting along an edge (the
+// colours of one body) share its vertices and are traversed together, and each triangle's mesh coded
+// beside it. Decoded as the same meshes, each as read_traversal_mesh would decode it alone: the same
+// triangles, vertices on the grid q in the order the group's traversal meets them. 2..max_group_meshes
+// meshes; the reader refuses a mesh left without a triangle.
+constexpr int max_group_meshes = 255;
+void write_mesh_group(ByteWriter& out, const std::vector<const TriangleMesh*>& meshes, double q, CodingState& state);
+std::vector<TriangleMesh> read_mesh_group(ByteReader& in, int mesh_count, double q, CodingState& state);
 void write_polygon_mesh(ByteWriter& out, const PolygonMesh& mesh, double q);
 PolygonMesh read_polygon_mesh(ByteReader& in, double q);
 

@@ -89,9 +89,52 @@ struct SceneDecoder {
   std::vector<Geometry> geometries;  // of every shape so far, for repeated ones
   size_t numbers = 0, number_budget = 0;
 
-  Shape shape(const std::string& path) {
+  // Validates a decoded shape's geometry, counts its numbers and keeps it for repeats.
+  void accept(const Shape& s, const std::string& path, size_t start) {
+    const std::string entity =
+        path + "/" + (s.name.empty() ? "shape at decoded byte " + std::to_string(start) : s.name);
+    try {
+      // Loops keep whatever closure they had when written; their closure is not this reader's to judge.
+      if (const auto* t = std::get_if<TrimmedSurface>(&s.geometry))
+        validate(*t, entity, std::numeric_limits<double>::infinity());
+      else
+        std::visit([&](const auto& g) { validate(g, entity); }, s.geometry);
+    } catch (const GeometryError& e) {
+      in.fail(std::string("invalid shape: ") + e.what(), start);
+    }
+    count_numbers(s.geometry, start);
+    geometries.push_back(s.geometry);
+  }
+
+  // A mesh group's shapes (at most `room` of them: the node's shapes not yet read).
+  std::vector<Shape> mesh_group(const std::string& path, size_t start, size_t room) {
+    const size_t count_at = in.offset();
+    const size_t count = in.count(3);
+    if (count < 2 || count > static_cast<size_t>(max_group_meshes) || count > room)
+      in.fail("a mesh group of " + std::to_string(count) + " shapes (2 to " + std::to_string(max_group_meshes) +
+                  ", and " + std::to_string(room) + " left in the node)",
+              count_at);
+    std::vector<Shape> shapes(count);
+    for (auto& s : shapes) {
+      const size_t flags_at = in.offset();
+      const uint8_t flags = in.byte(Field::structure);
+      if (flags & ~has_colour_flag) in.fail("unknown mesh group flags " + std::to_string(flags), flags_at);
+      s.name = in.text();
+      if (flags & has_colour_flag) s.colour = colour();
+    }
+    std::vector<TriangleMesh> meshes = read_mesh_group(in, static_cast<int>(count), q, state);
+    for (size_t i = 0; i < count; ++i) {
+      shapes[i].geometry = std::move(meshes[i]);
+      accept(shapes[i], path, start);
+    }
+    return shapes;
+  }
+
+  // The next record's shapes: one, or a mesh group's (at most `room`).
+  std::vector<Shape> shapes(const std::string& path, size_t room) {
     const size_t start = in.offset();
     const uint8_t kind_byte = in.byte(Field::structure);
+    if (kind_byte == mesh_group_kind) return mesh_group(path, start, room);
     const uint8_t kind = kind_byte & ~has_colour_flag;
     if (kind > traversal_mesh_kind) in.fail("unknown shape kind " + std::to_string(kind_byte), start);
     Shape s;
@@ -107,23 +150,11 @@ struct SceneDecoder {
       s.geometry = geometries[geometries.size() - 1 - back];
       count_numbers(s.geometry, at);
       geometries.push_back(s.geometry);
-      return s;
+      return {std::move(s)};
     }
     s.geometry = geometry_readers[kind](in, q, state);
-    const std::string entity =
-        path + "/" + (s.name.empty() ? "shape at decoded byte " + std::to_string(start) : s.name);
-    try {
-      // Loops keep whatever closure they had when written; their closure is not this reader's to judge.
-      if (const auto* t = std::get_if<TrimmedSurface>(&s.geometry))
-        validate(*t, entity, std::numeric_limits<double>::infinity());
-      else
-        std::visit([&](const auto& g) { validate(g, entity); }, s.geometry);
-    } catch (const GeometryError& e) {
-      in.fail(std::string("invalid shape: ") + e.what(), start);
-    }
-    count_numbers(s.geometry, start);
-    geometries.push_back(s.geometry);
-    return s;
+    accept(s, path, start);
+    return {std::move(s)};
   }
 
   SceneNode node(const std::string& parent_path, int depth) {
@@ -148,7 +179,8 @@ struct SceneDecoder {
       for (int k = 0; k < 3; ++k) n.transform.translation()(k) = number("a translation");
     const size_t shape_count = in.count(2);
     n.shapes.reserve(shape_count);
-    for (size_t i = 0; i < shape_count; ++i) n.shapes.push_back(shape(path));
+    while (n.shapes.size() < shape_count)
+      for (Shape& s : shapes(path, shape_count - n.shapes.size())) n.shapes.push_back(std::move(s));
     const size_t child_count = in.count(3);
     n.children.reserve(child_count);
     for (size_t i = 0; i < child_count; ++i) n.children.push_back(node(path, depth + 1));

@@ -13,6 +13,9 @@ constexpr uint8_t node_colour_flag = 1, node_linear_flag = 2, node_translation_f
 constexpr uint8_t repeated_shape_kind = 4;
 // 5: a triangle mesh coded by a traversal (write_traversal_mesh); decoded as core's TriangleMesh.
 constexpr uint8_t traversal_mesh_kind = 5;
+// 6: a group of shapes whose triangle meshes are coded together (write_mesh_group); the node's shape count
+// counts each of them.
+constexpr uint8_t mesh_group_kind = 6;
 constexpr uint8_t has_colour_flag = 0x10;
 // Repeated shapes make the decoded scene larger than its payload: it may hold at most this many numbers
 // (coordinates, knots, weights, indices) per payload byte, plus a fixed allowance, so that a small file

@@ -13,11 +13,13 @@ namespace cadnurbs::cnb {
 
 // What a byte is part of. A varint's first byte and its continuation bytes get different contexts.
 // A traversal-coded mesh's connectivity symbols, and its vertices: differences from the prediction,
-// ranks among the values met, and which axes are such values (cnb_vertex_values.hpp).
+// ranks among the values met, and which axes are such values (cnb_vertex_values.hpp); in a mesh group,
+// which of its meshes each triangle belongs to.
 enum class Field : uint8_t {
-  structure, count, text, knot, weight, point, trim, index, raw, symbol, mesh_point, mesh_rank, mesh_axes
+  structure, count, text, knot, weight, point, trim, index, raw, symbol, mesh_point, mesh_rank, mesh_axes,
+  mesh_member
 };
-constexpr int field_count = 13;
+constexpr int field_count = 14;
 // Contexts: 2 per field (first / continuation byte of a varint) plus 8 for the bytes of a float64.
 constexpr int context_count = 2 * field_count + 8;
 

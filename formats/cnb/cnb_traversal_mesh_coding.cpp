@@ -43,11 +43,13 @@ enum Symbol : uint8_t {
 constexpr uint8_t symbol_count = 7;
 
 // One edge of the border, directed so that the region lies on its left: from -> to in the triangle
-// `apex` completes. The encoder also keeps the edge's half-edge in the input mesh.
+// `apex` completes. The encoder also keeps the edge's half-edge in the input mesh. In a mesh group, `member`
+// is the group's mesh that triangle belongs to (it predicts the member of the triangle beyond).
 struct BorderEdge {
   int from, to, apex;
   int half_edge;
   int previous, next;  // places in the pool
+  int member = 0;
 };
 
 // The border: cyclic lists of border edges over a pool (a removed edge's place is not reused: the pool
@@ -184,6 +186,24 @@ class Border {
   int gate_ = -1;
 };
 
+// A triangle's member in a mesh group: 0 when it is the predicted one (the member of the triangle across
+// the gate, or at a start the last triangle's), else member + 1; in the first context after a 0, else the
+// second.
+void write_member(ByteWriter& out, int member, int predicted, bool& after_other) {
+  const uint8_t code = member == predicted ? 0 : static_cast<uint8_t>(member + 1);
+  out.byte(code, Field::mesh_member, after_other);
+  after_other = code != 0;
+}
+int read_member(ByteReader& in, int predicted, int member_count, bool& after_other) {
+  const size_t at = in.offset();
+  const uint8_t code = in.byte(Field::mesh_member, after_other);
+  after_other = code != 0;
+  if (code == 0) return predicted;
+  if (code > member_count)
+    in.fail("member " + std::to_string(code - 1) + " of a group of " + std::to_string(member_count) + " meshes", at);
+  return code - 1;
+}
+
 // Where the parallelogram of the gate's triangle (from, to, apex) puts the far vertex.
 GridPoint parallelogram(const GridPoint& from, const GridPoint& to, const GridPoint& apex) {
   return {from[0] + to[0] - apex[0], from[1] + to[1] - apex[1], from[2] + to[2] - apex[2]};
@@ -191,8 +211,10 @@ GridPoint parallelogram(const GridPoint& from, const GridPoint& to, const GridPo
 
 class TraversalEncoder {
  public:
-  TraversalEncoder(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state)
-      : out_(out), mesh_(mesh), values_(state.mesh_values), last_(state.last_mesh_vertex) {
+  // `members` (may be null): each triangle's mesh in a group, coded after the triangle.
+  TraversalEncoder(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state,
+                   const std::vector<int>* members)
+      : out_(out), mesh_(mesh), members_(members), values_(state.mesh_values), last_(state.last_mesh_vertex) {
     grid_.reserve(mesh.positions.size());
     for (const auto& p : mesh.positions) grid_.push_back({on_grid(p.x(), q), on_grid(p.y(), q), on_grid(p.z(), q)});
     pair_half_edges();
@@ -258,13 +280,23 @@ class TraversalEncoder {
     }
   }
 
+  // The member of triangle t, predicted as `predicted` (nothing outside a group).
+  int member(int t, int predicted) {
+    if (!members_) return 0;
+    const int m = (*members_)[t];
+    write_member(out_, m, predicted, member_after_other_);
+    last_member_ = m;
+    return m;
+  }
+
   void start(int t) {
     visited_[t] = true;
     ++written_;
     for (int k = 0; k < 3; ++k) vertex(mesh_.triangles[t][k], last_);
+    const int m = member(t, last_member_);
     std::array<BorderEdge, 3> edges;
     for (int k = 0; k < 3; ++k)
-      edges[k] = {corner(3 * t + k, 0), corner(3 * t + k, 1), corner(3 * t + k, 2), 3 * t + k, 0, 0};
+      edges[k] = {corner(3 * t + k, 0), corner(3 * t + k, 1), corner(3 * t + k, 2), 3 * t + k, 0, 0, m};
     border_.start(edges);
   }
 
@@ -287,7 +319,6 @@ class TraversalEncoder {
     const BorderEdge& after = border_[gate.next];
     const bool closes_before = gate.previous != g && before.half_edge == twin_[to_apex] && twin_[to_apex] >= 0;
     const bool closes_after = gate.next != g && after.half_edge == twin_[apex_to] && twin_[apex_to] >= 0;
-    const BorderEdge left{gate.from, v, gate.to, to_apex, 0, 0}, right{v, gate.to, gate.from, apex_to, 0, 0};
     uint8_t s = closes_before && closes_after ? closes_both
                 : closes_before               ? closes_previous
                 : closes_after                ? closes_next
@@ -296,11 +327,16 @@ class TraversalEncoder {
       vertex(v, parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex]));
     else
       symbol(s);
+    const int m = member(far / 3, gate.member);
+    const BorderEdge left{gate.from, v, gate.to, to_apex, 0, 0, m}, right{v, gate.to, gate.from, apex_to, 0, 0, m};
     border_.advance(s, g, left, right, v);
   }
 
   ByteWriter& out_;
   const TriangleMesh& mesh_;
+  const std::vector<int>* members_;
+  int last_member_ = 0;
+  bool member_after_other_ = false;
   std::vector<GridPoint> grid_;
   std::vector<int> twin_;
   std::vector<bool> visited_;
@@ -315,8 +351,11 @@ class TraversalEncoder {
 
 class TraversalDecoder {
  public:
-  TraversalDecoder(ByteReader& in, double q, CodingState& state)
-      : in_(in), q_(q), values_(state.mesh_values), last_(state.last_mesh_vertex) {}
+  // `member_count` > 0: a group's union, each triangle's member read after it into `members`.
+  TraversalDecoder(ByteReader& in, double q, CodingState& state, int member_count = 0,
+                   std::vector<int>* members = nullptr)
+      : in_(in), q_(q), values_(state.mesh_values), last_(state.last_mesh_vertex), member_count_(member_count),
+        members_(members) {}
 
   TriangleMesh decode() {
     vertex_count_ = in_.count(4);
@@ -363,9 +402,14 @@ class TraversalDecoder {
     return previous_;
   }
 
-  void triangle(int a, int b, int c, size_t at) {
+  // Adds the triangle and reads its member (predicted as `predicted`).
+  int triangle(int a, int b, int c, size_t at, int predicted) {
     if (a == b || b == c || c == a) in_.fail("a triangle with a repeated vertex", at);
     mesh_.triangles.push_back({a, b, c});
+    if (member_count_ == 0) return 0;
+    last_member_ = read_member(in_, predicted, member_count_, member_after_other_);
+    members_->push_back(last_member_);
+    return last_member_;
   }
 
   void start() {
@@ -374,9 +418,9 @@ class TraversalDecoder {
       const size_t at = in_.offset();
       v[k] = vertex(symbol(), at, last_);
     }
-    triangle(v[0], v[1], v[2], in_.offset());
-    border_.start({BorderEdge{v[0], v[1], v[2], -1, 0, 0}, BorderEdge{v[1], v[2], v[0], -1, 0, 0},
-                   BorderEdge{v[2], v[0], v[1], -1, 0, 0}});
+    const int m = triangle(v[0], v[1], v[2], in_.offset(), last_member_);
+    border_.start({BorderEdge{v[0], v[1], v[2], -1, 0, 0, m}, BorderEdge{v[1], v[2], v[0], -1, 0, 0, m},
+                   BorderEdge{v[2], v[0], v[1], -1, 0, 0, m}});
   }
 
   void step() {
@@ -400,8 +444,8 @@ class TraversalDecoder {
       v = border_[gate.next].to;
     else
       v = vertex(symbol, at, parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex]));
-    triangle(gate.to, gate.from, v, at);
-    const BorderEdge left{gate.from, v, gate.to, -1, 0, 0}, right{v, gate.to, gate.from, -1, 0, 0};
+    const int m = triangle(gate.to, gate.from, v, at, gate.member);
+    const BorderEdge left{gate.from, v, gate.to, -1, 0, 0, m}, right{v, gate.to, gate.from, -1, 0, 0, m};
     border_.advance(symbol, g, left, right, v);
   }
 
@@ -424,6 +468,10 @@ class TraversalDecoder {
   GridPoint& last_;
   uint8_t previous_ = new_vertex;
   Border border_;
+  int member_count_;
+  std::vector<int>* members_;
+  int last_member_ = 0;
+  bool member_after_other_ = false;
 };
 
 }  // namespace
@@ -435,12 +483,14 @@ bool traversal_codable(const TriangleMesh& mesh) {
   return true;
 }
 
-void write_traversal_mesh(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state) {
-  TraversalEncoder(out, mesh, q, state).encode();
+void write_traversal_mesh(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state,
+                          const std::vector<int>* members) {
+  TraversalEncoder(out, mesh, q, state, members).encode();
 }
 
-TriangleMesh read_traversal_mesh(ByteReader& in, double q, CodingState& state) {
-  return TraversalDecoder(in, q, state).decode();
+TriangleMesh read_traversal_mesh(ByteReader& in, double q, CodingState& state, int member_count,
+                                 std::vector<int>* members) {
+  return TraversalDecoder(in, q, state, member_count, members).decode();
 }
 
 }  // namespace cadnurbs::cnb

@@ -75,13 +75,18 @@ struct SceneEncoder {
     }
   }
 
-  void shape(const Shape& s, double world_scale) {
-    ByteWriter canonical;
+  // The record a shape's geometry would have coded alone from a fresh state: equal geometry, equal bytes.
+  std::string canonical(const Shape& s, double world_scale) {
+    ByteWriter bytes;
     CodingState fresh;
     fresh.trim_extrapolation = state.trim_extrapolation;
+    geometry(bytes, s.geometry, geometry_kind(s.geometry), world_scale, fresh, false);
+    return bytes.bytes();
+  }
+
+  void shape(const Shape& s, const std::string& canonical_bytes, double world_scale) {
     const uint8_t kind = geometry_kind(s.geometry);
-    geometry(canonical, s.geometry, kind, world_scale, fresh, false);
-    const auto [earlier, is_new] = written.emplace(canonical.bytes(), shape_count);
+    const auto [earlier, is_new] = written.emplace(canonical_bytes, shape_count);
     out.byte(static_cast<uint8_t>((is_new ? kind : repeated_shape_kind) | (s.colour ? has_colour_flag : 0)),
              Field::structure);
     out.text(s.name);
@@ -91,6 +96,36 @@ struct SceneEncoder {
     else
       out.varuint(shape_count - 1 - earlier->second, Field::index);
     ++shape_count;
+  }
+
+  // Where the run of shapes from `first` that a mesh group may hold ends: traversal-coded meshes met for
+  // the first time (a repeat is cheaper as one), at most max_group_meshes.
+  size_t group_end(const std::vector<Shape>& shapes, const std::vector<std::string>& canonicals, size_t first) const {
+    std::unordered_map<std::string, bool> in_run;
+    size_t end = first;
+    while (end < shapes.size() && end - first < max_group_meshes &&
+           geometry_kind(shapes[end].geometry) == traversal_mesh_kind && !written.count(canonicals[end]) &&
+           in_run.emplace(canonicals[end], true).second)
+      ++end;
+    return end;
+  }
+
+  void mesh_group(const std::vector<Shape>& shapes, const std::vector<std::string>& canonicals, size_t first,
+                  size_t end) {
+    out.byte(mesh_group_kind, Field::structure);
+    out.varuint(end - first, Field::count);
+    std::vector<const TriangleMesh*> meshes;
+    for (size_t i = first; i < end; ++i) {
+      const Shape& s = shapes[i];
+      out.byte(s.colour ? has_colour_flag : 0, Field::structure);
+      out.text(s.name);
+      if (s.colour) colour(*s.colour);
+      meshes.push_back(&std::get<TriangleMesh>(s.geometry));
+      written.emplace(canonicals[i], shape_count++);
+    }
+    write_mesh_group(out, meshes, q, state);
+    ++report.mesh_groups;
+    report.mesh_bound = options.mesh_deviation;
   }
 
   void node(const SceneNode& n, const Eigen::Affine3d& parent) {
@@ -110,7 +145,18 @@ struct SceneEncoder {
       for (int k = 0; k < 3; ++k) write_exact_number(out, n.transform.translation()(k));
     out.varuint(n.shapes.size(), Field::count);
     const double scale = transform_scale(world);
-    for (const auto& s : n.shapes) shape(s, scale);
+    std::vector<std::string> canonicals;
+    for (const auto& s : n.shapes) canonicals.push_back(canonical(s, scale));
+    for (size_t i = 0; i < n.shapes.size();) {
+      const size_t end = group_end(n.shapes, canonicals, i);
+      if (end - i >= 2) {
+        mesh_group(n.shapes, canonicals, i, end);
+        i = end;
+      } else {
+        shape(n.shapes[i], canonicals[i], scale);
+        ++i;
+      }
+    }
     out.varuint(n.children.size(), Field::count);
     for (const auto& child : n.children) node(child, world);
   }

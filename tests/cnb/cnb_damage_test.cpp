@@ -232,5 +232,73 @@ TEST(CnbDamage, RepeatsBeyondTheNumberBudget) {
                 std::to_string(budget) + " numbers (256 per payload byte and 1048576)");
 }
 
+// A mesh group record (shape kind 6) of `names.size()` meshes whose traversal holds one triangle, of the
+// first mesh: the vertex count, the triangle count, three new vertices (no axis listed, each a difference from
+// the previous) and the triangle's member code 0 (the predicted one, the first mesh).
+void one_triangle_group(cnb::ByteWriter& w, const std::vector<std::string>& names) {
+  w.byte(6);
+  w.varuint(names.size(), cnb::Field::count);
+  for (const auto& n : names) {
+    w.byte(0);
+    w.text(n);
+  }
+  w.varuint(3, cnb::Field::count);
+  w.varuint(1, cnb::Field::count);
+  for (int v = 0; v < 3; ++v) {
+    w.byte(0);  // symbol: a new vertex
+    w.byte(0);  // no axis holds a listed value
+    for (int k = 0; k < 3; ++k) w.varsint(k == v ? 1 : 0, cnb::Field::mesh_point);
+  }
+  w.byte(0);  // the member: the predicted one
+}
+
+// A mesh group must hold 2 to 255 meshes, all among the node's shapes, and each mesh a triangle.
+TEST(CnbDamage, MeshGroupsThatCannotBeRight) {
+  {
+    cnb::ByteWriter w = scene_header_and_root();
+    w.varuint(3, cnb::Field::count);  // three shapes, a group claims four
+    w.byte(6);
+    const size_t count_at = w.bytes().size();
+    w.varuint(4, cnb::Field::count);
+    for (int i = 0; i < 40; ++i) w.byte(0);
+    EXPECT_EQ(error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr)),
+              name + ": decoded byte " + std::to_string(count_at) +
+                  ": a mesh group of 4 shapes (2 to 255, and 3 left in the node)");
+  }
+  {
+    cnb::ByteWriter w = scene_header_and_root();
+    w.varuint(1, cnb::Field::count);
+    w.byte(6);
+    const size_t count_at = w.bytes().size();
+    w.varuint(1, cnb::Field::count);
+    for (int i = 0; i < 40; ++i) w.byte(0);
+    EXPECT_EQ(error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr)),
+              name + ": decoded byte " + std::to_string(count_at) +
+                  ": a mesh group of 1 shapes (2 to 255, and 1 left in the node)");
+  }
+  {
+    cnb::ByteWriter w = scene_header_and_root();
+    w.varuint(2, cnb::Field::count);
+    const size_t group_at = w.bytes().size();
+    one_triangle_group(w, {"a", "b"});
+    const size_t traversal_at = group_at + 1 + 1 + 2 * 3;  // kind, count, two (flags, name)
+    w.varuint(0, cnb::Field::count);  // children
+    EXPECT_EQ(error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr)),
+              name + ": decoded byte " + std::to_string(traversal_at) + ": mesh 2 of a group of 2 has no triangle");
+  }
+  {  // the same with both meshes named by the one triangle's code: member 2 of a group of 2 does not exist
+    cnb::ByteWriter w = scene_header_and_root();
+    w.varuint(2, cnb::Field::count);
+    one_triangle_group(w, {"a", "b"});
+    std::string payload = w.bytes();
+    payload.back() = 3;  // member code 3: mesh number 2 (counted from 0)
+    cnb::ByteWriter damaged;
+    for (char c : payload) damaged.byte(static_cast<uint8_t>(c));
+    damaged.varuint(0, cnb::Field::count);
+    EXPECT_EQ(error_of(cnb::pack(damaged, CnbOptions::Coder::deflate, nullptr)),
+              name + ": decoded byte " + std::to_string(payload.size() - 1) + ": member 2 of a group of 2 meshes");
+  }
+}
+
 }  // namespace
 }  // namespace cadnurbs
