@@ -1,7 +1,6 @@
 #include "converters/cnb_coding.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -20,7 +19,7 @@ namespace cadnurbs {
 
 namespace {
 // The share of D that trims (in (u,v)) and meshes (their certificate) may use; points get the rest.
-const double kMeshShare = getenv("SHARE") ? atof(getenv("SHARE")) : 0.4;
+constexpr double kMeshShare = 0.4;
 
 // How a scene meshes as convert meshes a .cnb of it (certified_mesh: sewn first where it sews).
 struct MeshedAsRead {
