@@ -12,8 +12,9 @@ namespace cadnurbs {
 
 struct CnbCoding {
   Scene scene;                // as written: the chosen bodies meshed
-  CnbOptions options;         // D, the trim share (= the meshes' share), mesh_deviation = their certificate,
-                              // quantisation_scale (below)
+  CnbOptions options;         // D, the trim share (= the meshes' share: 0.4, or where every body was meshed
+                              // whichever of 0.4, 0.6 and 0.8 codes smallest), mesh_deviation = their
+                              // certificate, quantisation_scale (below)
   CodingChoiceReport choice;  // what was meshed, and the candidates' bytes
   CnbWriteReport written;     // the writer's report for `bytes`; its deviation_bound() is within D
   std::string bytes;          // the file
