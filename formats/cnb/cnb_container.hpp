@@ -9,11 +9,12 @@
 
 namespace cadnurbs::cnb {
 
-// Version 2 (written): magic, version, coder, the payload size as a varuint, the CRC-32, the coded bytes.
-// Version 1 (still read): a fixed 18-byte header with the coded size; its scene header's numbers are raw
-// float64 where version 2 has exact numbers (docs/cnb.md).
+// Version 3 (written): magic, version, coder, the payload size as a varuint, the CRC-32, the coded bytes.
+// Version 2 (still read): the same header; its scene header's grid step and bound are raw float64 where
+// version 3 has exact numbers. Version 1 (still read): a fixed 18-byte header with the coded size; its
+// scene header's numbers are all raw float64 (docs/cnb.md).
 constexpr size_t version_1_header_size = 18;
-constexpr uint8_t format_version = 2;
+constexpr uint8_t format_version = 3;
 
 // The whole file for a payload, coded as `choice` asks (the smaller of both for Coder::smallest).
 // Fills the report's size fields.

@@ -49,6 +49,16 @@ void write_exact_number(ByteWriter& out, double value) {
   }
 }
 
+double short_decimal_at_least(double value) {
+  if (!(value > 0) || !std::isfinite(value)) return value;
+  const int k = 2 - static_cast<int>(std::floor(std::log10(value)));
+  if (k < 0 || k > 17) return value;
+  const double scale = std::pow(10.0, static_cast<double>(k));  // as read_exact_number divides
+  int64_t n = static_cast<int64_t>(std::ceil(value * scale));
+  while (static_cast<double>(n) / scale < value) ++n;
+  return static_cast<double>(n) / scale;
+}
+
 double read_exact_number(ByteReader& in) {
   const size_t at = in.offset();
   const uint64_t tag = in.varuint(Field::raw);

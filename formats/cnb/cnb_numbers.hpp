@@ -54,6 +54,10 @@ size_t distinct_count(const std::vector<double>& weights);
 // else 0 and the raw float64. The reader refuses a k above 17 and a value that is not finite.
 void write_exact_number(ByteWriter& out, double value);
 double read_exact_number(ByteReader& in);
+// The smallest number of three significant digits at or above `value` > 0, as read_exact_number gives it
+// back, so that it codes in about 3 bytes instead of 8; `value` itself where no such decimal has an
+// exponent in 0..17 (below 1e-15, or from 1000 on).
+double short_decimal_at_least(double value);
 
 // Orders: refused above this before anything is allocated.
 constexpr uint64_t largest_order = 64;

@@ -196,7 +196,8 @@ Scene read_cnb(const std::string& bytes, const std::string& name) {
   try {
     Scene scene;
     SceneDecoder decoder{in, 0, {}, {}, 0, numbers_per_payload_byte * payload.size + numbers_allowance};
-    // Version 1 wrote the units' sizes and D as raw float64, version 2 as exact numbers.
+    // Version 1 wrote the units' sizes and D as raw float64, versions 2 and 3 as exact numbers; versions 1
+    // and 2 wrote q and the bound as raw float64, version 3 q as a float32 and the bound as an exact number.
     auto number = [&](const char* what) {
       return payload.version == 1 ? decoder.finite_float(what) : read_exact_number(in);
     };
@@ -206,9 +207,12 @@ Scene read_cnb(const std::string& bytes, const std::string& name) {
     scene.source_unit.millimetres = number("the source unit's size");
     number("the maximum deviation");
     const size_t q_at = in.offset();
-    decoder.q = in.float64();
+    decoder.q = payload.version < 3 ? in.float64() : static_cast<double>(in.float32());
     if (!(decoder.q > 0) || !std::isfinite(decoder.q)) in.fail("the grid step is not positive and finite", q_at);
-    decoder.finite_float("the deviation bound");
+    if (payload.version < 3)
+      decoder.finite_float("the deviation bound");
+    else
+      read_exact_number(in);
     scene.root = decoder.node("", 0);
     if (in.left() > 0) in.fail(std::to_string(in.left()) + " bytes after the scene");
     return scene;

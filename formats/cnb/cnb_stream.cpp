@@ -38,6 +38,11 @@ void ByteWriter::float64(double value) {
   for (int i = 0; i < 8; ++i) put(static_cast<uint8_t>(bits >> (8 * i)), float_context(i));
 }
 
+void ByteWriter::float32(float value) {
+  const uint32_t bits = std::bit_cast<uint32_t>(value);
+  for (int i = 0; i < 4; ++i) put(static_cast<uint8_t>(bits >> (8 * i)), float_context(4 + i));
+}
+
 void ByteWriter::text(const std::string& value) {
   varuint(value.size(), Field::count);
   for (char c : value) put(static_cast<uint8_t>(c), first_context(Field::text));
@@ -77,6 +82,12 @@ double ByteReader::float64() {
   uint64_t bits = 0;
   for (int i = 0; i < 8; ++i) bits |= static_cast<uint64_t>(take(float_context(i))) << (8 * i);
   return std::bit_cast<double>(bits);
+}
+
+float ByteReader::float32() {
+  uint32_t bits = 0;
+  for (int i = 0; i < 4; ++i) bits |= static_cast<uint32_t>(take(float_context(4 + i))) << (8 * i);
+  return std::bit_cast<float>(bits);
 }
 
 std::string ByteReader::text() {

@@ -40,6 +40,7 @@ class ByteWriter {
   void varuint(uint64_t value, Field field);
   void varsint(int64_t value, Field field);  // zig-zag: 0, -1, 1, -2, ... -> 0, 1, 2, 3, ...
   void float64(double value);
+  void float32(float value);  // in the contexts of a float64's upper four bytes
   void text(const std::string& value);
   void append(const ByteWriter& other);
 
@@ -70,6 +71,7 @@ class ByteReader {
   uint64_t varuint(Field field);
   int64_t varsint(Field field);
   double float64();
+  float float32();
   std::string text();
   // A count of things that each take at least `min_bytes` bytes: refused (before anything is allocated)
   // when the bytes left cannot hold that many.

@@ -166,7 +166,10 @@ struct SceneEncoder {
 // extrapolation leaves the smaller residuals.
 std::string encode(const Scene& scene, const CnbOptions& options, bool trim_extrapolation, CnbWriteReport& r) {
   r = CnbWriteReport{};
-  const double q = point_step(scene, options);
+  // The step as the largest float32 not above it: 4 bytes in the header, and the same grid to 1e-7.
+  float step = static_cast<float>(point_step(scene, options));
+  if (static_cast<double>(step) > point_step(scene, options)) step = std::nextafter(step, 0.0f);
+  const double q = step;
   r.point_step = q;
   r.point_bound = q * std::sqrt(3.0) / 2.0 * largest_world_scale(scene);
   SceneEncoder encoder{ByteWriter{}, options, q, r, {}, {}, 0};
@@ -179,8 +182,8 @@ std::string encode(const Scene& scene, const CnbOptions& options, bool trim_extr
   header.text(scene.source_unit.name);
   write_exact_number(header, scene.source_unit.millimetres);
   write_exact_number(header, options.max_deviation);
-  header.float64(q);
-  header.float64(r.deviation_bound());
+  header.float32(step);
+  write_exact_number(header, short_decimal_at_least(r.deviation_bound()));
   ByteWriter payload = header;
   payload.append(encoder.out);
   for (uint8_t context : payload.contexts()) {

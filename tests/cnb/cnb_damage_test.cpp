@@ -33,7 +33,7 @@ std::string error_of(const std::string& bytes) {
   return "(read without error)";
 }
 
-// Where the version 2 header's CRC-32 lies: after the payload size's varuint at byte 6.
+// Where the version 2 and 3 header's CRC-32 lies: after the payload size's varuint at byte 6.
 size_t crc_offset(const std::string& file) {
   size_t at = 6;
   while (static_cast<uint8_t>(file[at]) & 0x80) ++at;
@@ -88,7 +88,7 @@ TEST(CnbDamage, EveryFlippedByteIsRefused) {
     damaged[at] = static_cast<char>(damaged[at] ^ 0x24);
     std::string expected;
     if (at < 4) expected = name + ": byte " + std::to_string(at) + ": not a .cnb file (the magic number is \\x89CNB)";
-    else if (at == 4) expected = name + ": byte 4: version " + std::to_string(2 ^ 0x24) + " is not one this reader knows (1, 2)";
+    else if (at == 4) expected = name + ": byte 4: version " + std::to_string(3 ^ 0x24) + " is not one this reader knows (1, 2, 3)";
     else expected = crc_message;
     ASSERT_EQ(error_of(damaged), expected) << "byte " << at;
   }
@@ -157,8 +157,8 @@ TEST(CnbDamage, VersionOneFilesStillRead) {
   EXPECT_EQ(mesh.triangles.at(0), (std::array<int, 3>{0, 1, 2}));
 }
 
-// A payload's scene header (unit mm, D = q = bound = 1; version 2: sizes and D as exact numbers) and the
-// root node's name and flags.
+// A payload's scene header (unit mm, D = q = bound = 1; version 3: sizes, D and the bound as exact
+// numbers, q as a float32) and the root node's name and flags.
 cnb::ByteWriter scene_header_and_root() {
   cnb::ByteWriter w;
   w.text("mm");
@@ -166,10 +166,42 @@ cnb::ByteWriter scene_header_and_root() {
   w.text("mm");
   cnb::write_exact_number(w, 1.0);
   cnb::write_exact_number(w, 1.0);
-  for (int i = 0; i < 2; ++i) w.float64(1.0);
+  w.float32(1.0f);
+  cnb::write_exact_number(w, 1.0);
   w.text("");
   w.byte(0);
   return w;
+}
+
+// A file of format version 2 (the grid step and the bound as raw float64), as writers made them before
+// version 3, still reads: one triangle, on the grid its float64 step gives.
+TEST(CnbDamage, VersionTwoFilesStillRead) {
+  cnb::ByteWriter w;
+  w.text("mm");
+  cnb::write_exact_number(w, 1.0);
+  w.text("mm");
+  cnb::write_exact_number(w, 1.0);
+  cnb::write_exact_number(w, 0.1);  // D
+  w.float64(0.0866);                // q
+  w.float64(0.075);                 // the bound
+  w.text("");
+  w.byte(0);
+  w.varuint(1, cnb::Field::count);  // one shape
+  w.byte(2);                        // a triangle mesh
+  w.text("t");
+  w.varuint(3, cnb::Field::count);
+  for (int c : {0, 0, 0, 10, 0, 0, -10, 10, 0}) w.varsint(c, cnb::Field::point);
+  w.varuint(1, cnb::Field::count);
+  for (int d : {0, 1, 1}) w.varsint(d, cnb::Field::index);
+  w.byte(0);                        // no normals
+  w.varuint(0, cnb::Field::count);  // no children
+  std::string file = cnb::pack(w, CnbOptions::Coder::deflate, nullptr);
+  file[4] = 2;
+  file = with_payload_size(file, payload_size(file));  // the CRC made right for the version byte
+  const Scene scene = read_cnb(file, name);
+  const auto& mesh = std::get<TriangleMesh>(scene.root.shapes.at(0).geometry);
+  ASSERT_EQ(mesh.positions.size(), 3u);
+  EXPECT_EQ(mesh.positions[1], Eigen::Vector3d(10 * 0.0866, 0, 0));
 }
 
 // A payload with a valid checksum whose counts lie: refused at the count, before allocating.
