@@ -29,9 +29,9 @@ void write_mesh_group(ByteWriter& out, const std::vector<const TriangleMesh*>& m
     auto vertex = [&](int v) {
       if (joined_vertex[v] >= 0) return joined_vertex[v];
       const auto& p = mesh.positions[v];
-      const Position g{p.x(), p.y(), p.z()};
-      std::vector<int>& there = joined_at[g];
-      const size_t k = taken[g]++;
+      const Position at{p.x(), p.y(), p.z()};
+      std::vector<int>& there = joined_at[at];
+      const size_t k = taken[at]++;
       if (k == there.size()) {
         there.push_back(static_cast<int>(joined.positions.size()));
         joined.positions.push_back(p);
