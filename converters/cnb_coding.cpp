@@ -24,6 +24,13 @@ constexpr double kMeshShare = 0.4;
 // small curved parts (90 KiCad parts at 1 mm, the best of 0.4, 0.6 and 0.8 per part: 73,764 -> 72,063
 // bytes before mesh groups), while 0.6 or 0.8 for all was larger (77,510 and 80,860).
 constexpr double kWholeMeshShares[] = {0.6, 0.8};
+// A grid a little finer than the bound needs can code smaller: where a part's pitches fall in whole steps,
+// its repeats predict exactly. A scene without trimmed surfaces (every face meshed) is written at whichever
+// of 1, 0.99, ..., 0.80 of the step codes smallest (90 KiCad parts at 1 mm: 60,937 -> 58,822 bytes with
+// steps of 0.005; TQFP-52 977 -> 809). A finer grid only tightens the bound; trims, whose sewing was
+// checked at one scale, are not moved.
+constexpr int kFinerGrids = 20;
+constexpr double kFinerGridStep = 0.01;
 
 // How a scene meshes as convert meshes a .cnb of it (certified_mesh: sewn first where it sews).
 struct MeshedAsRead {
@@ -125,6 +132,22 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exac
   out.options.trim_share = share;
   out.options.mesh_deviation = out.choice.certified_deviation;
   out.bytes = write_cnb(out.scene, out.options, &out.written);
+  if (mesh_where_cheaper && count_entities(out.scene).trimmed_surfaces == 0) {
+    const CnbOptions chosen = out.options;
+    for (int i = 1; i <= kFinerGrids; ++i) {
+      CnbOptions finer = chosen;
+      finer.quantisation_scale *= 1.0 - kFinerGridStep * i;
+      CnbWriteReport written;
+      std::string bytes;
+      try {
+        bytes = write_cnb(out.scene, finer, &written);
+      } catch (const std::invalid_argument&) {
+        break;  // a grid too fine for the model's coordinates; finer ones are too
+      }
+      if (bytes.size() < out.bytes.size()) out.bytes = std::move(bytes), out.options = finer, out.written = written;
+    }
+    out.choice.set_bytes(out.bytes.size());
+  }
   if (!mesh_where_cheaper)
     out.choice.as_is_bytes = out.choice.per_body_bytes = out.choice.all_meshed_bytes = out.bytes.size();
   return out;

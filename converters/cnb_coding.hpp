@@ -14,7 +14,8 @@ struct CnbCoding {
   Scene scene;                // as written: the chosen bodies meshed
   CnbOptions options;         // D, the trim share (= the meshes' share: 0.4, or where every body was meshed
                               // whichever of 0.4, 0.6 and 0.8 codes smallest), mesh_deviation = their
-                              // certificate, quantisation_scale (below)
+                              // certificate, quantisation_scale (below; for a scene without trimmed
+                              // surfaces, whichever of 1, 0.99, ..., 0.8 codes smallest)
   CodingChoiceReport choice;  // what was meshed, and the candidates' bytes
   CnbWriteReport written;     // the writer's report for `bytes`; its deviation_bound() is within D
   std::string bytes;          // the file

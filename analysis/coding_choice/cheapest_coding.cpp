@@ -62,6 +62,12 @@ size_t CodingChoiceReport::bytes() const {
   return by_whole[static_cast<int>(chosen)];
 }
 
+void CodingChoiceReport::set_bytes(size_t bytes) {
+  size_t* by_whole[] = {&as_is_bytes, &per_body_bytes, &all_meshed_bytes, &exact_meshed_bytes,
+                        &merged_meshes_bytes};  // Whole's order
+  *by_whole[static_cast<int>(chosen)] = bytes;
+}
+
 Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& parameters, const CodedBytes& coded_bytes,
                       CodingChoiceReport* report, const Scene* exact) {
   const double d = parameters.max_deviation, t = parameters.mesh_share;

@@ -63,6 +63,7 @@ struct CodingChoiceReport {
   // no body could be meshed.
   size_t as_is_bytes = 0, per_body_bytes = 0, all_meshed_bytes = 0, exact_meshed_bytes = 0, merged_meshes_bytes = 0;
   size_t bytes() const;  // of the returned candidate
+  void set_bytes(size_t bytes);  // when the caller writes the returned candidate in fewer bytes than costed
 };
 
 using CodedBytes = std::function<size_t(const Scene& scene, double mesh_deviation)>;
