@@ -56,17 +56,19 @@ Candidate with_meshes(const Scene& scene, const SceneBodies& bodies,
 
 }  // namespace
 
-size_t CodingChoiceReport::bytes() const {
-  const size_t by_whole[] = {as_is_bytes, per_body_bytes, all_meshed_bytes, exact_meshed_bytes,
-                             merged_meshes_bytes};  // Whole's order
-  return by_whole[static_cast<int>(chosen)];
+namespace {
+// The bytes field of the report's chosen candidate (const or not).
+template <class Report>
+auto& chosen_bytes(Report& r) {
+  decltype(&r.as_is_bytes) const by_whole[] = {&r.as_is_bytes, &r.per_body_bytes, &r.all_meshed_bytes,
+                                               &r.exact_meshed_bytes, &r.merged_meshes_bytes};  // Whole's order
+  return *by_whole[static_cast<int>(r.chosen)];
 }
+}  // namespace
 
-void CodingChoiceReport::set_bytes(size_t bytes) {
-  size_t* by_whole[] = {&as_is_bytes, &per_body_bytes, &all_meshed_bytes, &exact_meshed_bytes,
-                        &merged_meshes_bytes};  // Whole's order
-  *by_whole[static_cast<int>(chosen)] = bytes;
-}
+size_t CodingChoiceReport::bytes() const { return chosen_bytes(*this); }
+
+void CodingChoiceReport::set_bytes(size_t bytes) { chosen_bytes(*this) = bytes; }
 
 Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& parameters, const CodedBytes& coded_bytes,
                       CodingChoiceReport* report, const Scene* exact) {

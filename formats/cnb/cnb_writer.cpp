@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "formats/cnb/cnb_container.hpp"
 #include "formats/cnb/cnb_geometry.hpp"
@@ -101,11 +102,11 @@ struct SceneEncoder {
   // Where the run of shapes from `first` that a mesh group may hold ends: traversal-coded meshes met for
   // the first time (a repeat is cheaper as one), at most max_group_meshes.
   size_t group_end(const std::vector<Shape>& shapes, const std::vector<std::string>& canonicals, size_t first) const {
-    std::unordered_map<std::string, bool> in_run;
+    std::unordered_set<std::string> in_run;
     size_t end = first;
     while (end < shapes.size() && end - first < max_group_meshes &&
            geometry_kind(shapes[end].geometry) == traversal_mesh_kind && !written.count(canonicals[end]) &&
-           in_run.emplace(canonicals[end], true).second)
+           in_run.insert(canonicals[end]).second)
       ++end;
     return end;
   }
@@ -167,8 +168,9 @@ struct SceneEncoder {
 std::string encode(const Scene& scene, const CnbOptions& options, bool trim_extrapolation, CnbWriteReport& r) {
   r = CnbWriteReport{};
   // The step as the largest float32 not above it: 4 bytes in the header, and the same grid to 1e-7.
-  float step = static_cast<float>(point_step(scene, options));
-  if (static_cast<double>(step) > point_step(scene, options)) step = std::nextafter(step, 0.0f);
+  const double largest_step = point_step(scene, options);
+  float step = static_cast<float>(largest_step);
+  if (static_cast<double>(step) > largest_step) step = std::nextafter(step, 0.0f);
   const double q = step;
   r.point_step = q;
   r.point_bound = q * std::sqrt(3.0) / 2.0 * largest_world_scale(scene);

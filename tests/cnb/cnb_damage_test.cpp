@@ -286,27 +286,25 @@ void one_triangle_group(cnb::ByteWriter& w, const std::vector<std::string>& name
 
 // A mesh group must hold 2 to 255 meshes, all among the node's shapes, and each mesh a triangle.
 TEST(CnbDamage, MeshGroupsThatCannotBeRight) {
-  {
+  // A node of `shapes` shapes whose first record is a group claiming `group` of them.
+  auto group_count_error = [](int shapes, int group) {
     cnb::ByteWriter w = scene_header_and_root();
-    w.varuint(3, cnb::Field::count);  // three shapes, a group claims four
+    w.varuint(shapes, cnb::Field::count);
     w.byte(6);
     const size_t count_at = w.bytes().size();
-    w.varuint(4, cnb::Field::count);
+    w.varuint(group, cnb::Field::count);
     for (int i = 0; i < 40; ++i) w.byte(0);
-    EXPECT_EQ(error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr)),
-              name + ": decoded byte " + std::to_string(count_at) +
-                  ": a mesh group of 4 shapes (2 to 255, and 3 left in the node)");
+    return std::pair{count_at, error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr))};
+  };
+  {
+    const auto [count_at, error] = group_count_error(3, 4);
+    EXPECT_EQ(error, name + ": decoded byte " + std::to_string(count_at) +
+                         ": a mesh group of 4 shapes (2 to 255, and 3 left in the node)");
   }
   {
-    cnb::ByteWriter w = scene_header_and_root();
-    w.varuint(1, cnb::Field::count);
-    w.byte(6);
-    const size_t count_at = w.bytes().size();
-    w.varuint(1, cnb::Field::count);
-    for (int i = 0; i < 40; ++i) w.byte(0);
-    EXPECT_EQ(error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr)),
-              name + ": decoded byte " + std::to_string(count_at) +
-                  ": a mesh group of 1 shapes (2 to 255, and 1 left in the node)");
+    const auto [count_at, error] = group_count_error(1, 1);
+    EXPECT_EQ(error, name + ": decoded byte " + std::to_string(count_at) +
+                         ": a mesh group of 1 shapes (2 to 255, and 1 left in the node)");
   }
   {
     cnb::ByteWriter w = scene_header_and_root();
