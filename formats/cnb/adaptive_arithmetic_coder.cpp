@@ -1,6 +1,7 @@
 #include "formats/cnb/adaptive_arithmetic_coder.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace cadnurbs::cnb {
 
@@ -60,8 +61,11 @@ class Encoder {
 
 }  // namespace
 
-std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_t>& contexts) {
-  std::vector<BitModel> probabilities(static_cast<size_t>(context_count) * 256);
+ContextModels uniform_models() { return ContextModels(static_cast<size_t>(context_count) * 256); }
+
+std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_t>& contexts,
+                              const ContextModels& start) {
+  ContextModels probabilities = start;
   Encoder encoder;
   for (size_t i = 0; i < bytes.size(); ++i) {
     BitModel* tree = &probabilities[static_cast<size_t>(contexts[i]) * 256];
@@ -76,8 +80,8 @@ std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_
   return encoder.finish();
 }
 
-ArithmeticDecoder::ArithmeticDecoder(const char* coded, size_t size)
-    : coded_(coded), size_(size), probabilities_(static_cast<size_t>(context_count) * 256) {
+ArithmeticDecoder::ArithmeticDecoder(const char* coded, size_t size, ContextModels start)
+    : coded_(coded), size_(size), probabilities_(std::move(start)) {
   for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | input();
 }
 

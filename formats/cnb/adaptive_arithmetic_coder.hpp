@@ -12,20 +12,28 @@
 
 namespace cadnurbs::cnb {
 
-// `bytes[i]` coded in context `contexts[i]` (< context_count).
-std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_t>& contexts);
-
-// Decodes lazily. Past the end of the coded bytes it reads zeros: the caller bounds how many bytes it
-// asks for (the payload size in the header), and the checksum has vouched for the coded bytes.
 // One binary decision's model: the probability of a 0 (of 4096) and how many bits it has seen.
 struct BitModel {
   uint16_t p = 2048;
   uint8_t seen = 0;
 };
 
+// The models every context starts from: 256 per context (node 1 is the first decision of a byte, node
+// 2n + bit the next), context_count × 256 in all. `uniform_models()` has them all at ½ (coder 2); coder 3
+// (format version 4 on) starts from the coder prior (cnb_coder_prior.hpp).
+using ContextModels = std::vector<BitModel>;
+ContextModels uniform_models();
+
+// `bytes[i]` coded in context `contexts[i]` (< context_count), every context starting from `start`.
+std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_t>& contexts,
+                              const ContextModels& start);
+
+// Decodes lazily. Past the end of the coded bytes it reads zeros: the caller bounds how many bytes it
+// asks for (the payload size in the header), and the checksum has vouched for the coded bytes.
 class ArithmeticDecoder : public ByteSource {
  public:
-  ArithmeticDecoder(const char* coded, size_t size);
+  // `start`: the models the encoder started from.
+  ArithmeticDecoder(const char* coded, size_t size, ContextModels start);
   uint8_t next(int context) override;
 
  private:

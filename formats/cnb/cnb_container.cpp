@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "formats/cnb/adaptive_arithmetic_coder.hpp"
+#include "formats/cnb/cnb_coder_prior.hpp"
 #include "formats/common/file_io.hpp"
 
 namespace cadnurbs::cnb {
@@ -13,7 +14,7 @@ namespace cadnurbs::cnb {
 namespace {
 
 constexpr char magic[4] = {'\x89', 'C', 'N', 'B'};
-enum CoderId : uint8_t { deflate_id = 1, arithmetic_id = 2 };
+enum CoderId : uint8_t { deflate_id = 1, arithmetic_id = 2, arithmetic_prior_id = 3 };
 // Raw deflate cannot expand more than 1032:1.
 constexpr size_t deflate_expansion_limit = 1032;
 
@@ -63,7 +64,8 @@ class OwnedBufferSource : public ByteSource {
 
 class OwnedArithmeticSource : public ByteSource {
  public:
-  explicit OwnedArithmeticSource(std::string coded) : coded_(std::move(coded)), decoder_(coded_.data(), coded_.size()) {}
+  OwnedArithmeticSource(std::string coded, ContextModels start)
+      : coded_(std::move(coded)), decoder_(coded_.data(), coded_.size(), std::move(start)) {}
   uint8_t next(int context) override { return decoder_.next(context); }
 
  private:
@@ -108,18 +110,25 @@ std::string inflate_raw(const std::string& file, size_t start, size_t size, cons
 
 std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteReport* report) {
   if (payload.bytes().size() > 0xFFFFFFFFu) throw std::runtime_error("cnb: a payload above 4 GiB");
-  std::string coded;
-  uint8_t id = deflate_id;
-  std::string deflated, arithmetic;
-  if (choice != CnbOptions::Coder::arithmetic) deflated = deflate_raw(payload.bytes());
-  if (choice != CnbOptions::Coder::deflate) arithmetic = arithmetic_encode(payload.bytes(), payload.contexts());
-  if (choice == CnbOptions::Coder::deflate ||
-      (choice == CnbOptions::Coder::smallest && deflated.size() <= arithmetic.size())) {
-    coded = deflated;
-  } else {
-    coded = arithmetic;
-    id = arithmetic_id;
+  // The entropy coders, each tried when asked for by name or for the smallest; ties keep the earlier.
+  struct Candidate {
+    CnbOptions::Coder coder;
+    uint8_t id;
+    std::string coded;
+  };
+  Candidate candidates[] = {{CnbOptions::Coder::deflate, deflate_id, {}},
+                            {CnbOptions::Coder::arithmetic, arithmetic_id, {}},
+                            {CnbOptions::Coder::arithmetic_prior, arithmetic_prior_id, {}}};
+  const Candidate* chosen = nullptr;
+  for (Candidate& c : candidates) {
+    if (choice != CnbOptions::Coder::smallest && choice != c.coder) continue;
+    c.coded = c.id == deflate_id ? deflate_raw(payload.bytes())
+                                 : arithmetic_encode(payload.bytes(), payload.contexts(),
+                                                     c.id == arithmetic_id ? uniform_models() : coder_prior_models());
+    if (!chosen || c.coded.size() < chosen->coded.size()) chosen = &c;
   }
+  const std::string& coded = chosen->coded;
+  const uint8_t id = chosen->id;
   std::string file(magic, 4);
   file.push_back(static_cast<char>(format_version));
   file.push_back(static_cast<char>(id));
@@ -132,8 +141,9 @@ std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteRe
   file += coded;
   if (report) {
     report->payload_bytes = payload.bytes().size();
-    report->deflate_bytes = deflated.size();
-    report->arithmetic_bytes = arithmetic.size();
+    report->deflate_bytes = candidates[0].coded.size();
+    report->arithmetic_bytes = candidates[1].coded.size();
+    report->arithmetic_prior_bytes = candidates[2].coded.size();
     report->file_bytes = file.size();
   }
   return file;
@@ -158,7 +168,7 @@ std::pair<size_t, size_t> version_1_header(const std::string& file, const std::s
   return {h, size};
 }
 
-// The same for versions 2 and 3: the payload size as a varuint at byte 6, then the CRC of all before it and of
+// The same for versions 2 to 4: the payload size as a varuint at byte 6, then the CRC of all before it and of
 // the coded bytes, which run to the end of the file.
 std::pair<size_t, size_t> version_2_header(const std::string& file, const std::string& name) {
   uint64_t size = 0;
@@ -187,8 +197,8 @@ OpenedPayload open_payload(const std::string& file, const std::string& name) {
   }
   if (file.size() < 6) refuse(name, file.size(), "truncated: the file ends inside the header");
   const uint8_t version = static_cast<uint8_t>(file[4]);
-  if (version < 1 || version > 3)
-    refuse(name, 4, "version " + std::to_string(version) + " is not one this reader knows (1, 2, 3)");
+  if (version < 1 || version > 4)
+    refuse(name, 4, "version " + std::to_string(version) + " is not one this reader knows (1, 2, 3, 4)");
   const auto [start, size] = version == 1 ? version_1_header(file, name) : version_2_header(file, name);
   const size_t coded = file.size() - start;
   const uint8_t id = static_cast<uint8_t>(file[5]);
@@ -198,9 +208,11 @@ OpenedPayload open_payload(const std::string& file, const std::string& name) {
   if (id == deflate_id) {
     if (size > deflate_expansion_limit * coded + 64) refuse(name, 6, "a payload of " + std::to_string(size) + " bytes cannot come from " + std::to_string(coded) + " deflated bytes");
     opened.source = std::make_unique<OwnedBufferSource>(inflate_raw(file, start, size, name));
-  } else if (id == arithmetic_id) {
+  } else if (id == arithmetic_id || (id == arithmetic_prior_id && version >= 4)) {
     if (size > arithmetic_expansion_limit * coded + 64) refuse(name, 6, "a payload of " + std::to_string(size) + " bytes cannot come from " + std::to_string(coded) + " coded bytes");
-    opened.source = std::make_unique<OwnedArithmeticSource>(file.substr(start));
+    opened.source = std::make_unique<OwnedArithmeticSource>(
+        file.substr(start), id == arithmetic_id ? uniform_models() : coder_prior_models());
+    opened.arithmetic = true;
   } else {
     refuse(name, 5, "unknown entropy coder " + std::to_string(id));
   }

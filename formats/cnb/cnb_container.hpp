@@ -9,12 +9,13 @@
 
 namespace cadnurbs::cnb {
 
-// Version 3 (written): magic, version, coder, the payload size as a varuint, the CRC-32, the coded bytes.
-// Version 2 (still read): the same header; its scene header's grid step and bound are raw float64 where
-// version 3 has exact numbers. Version 1 (still read): a fixed 18-byte header with the coded size; its
-// scene header's numbers are all raw float64 (docs/cnb.md).
+// Version 4 (written): magic, version, coder, the payload size as a varuint, the CRC-32, the coded bytes.
+// Version 3 (still read): the same, without coder 3 (the coder prior) and without the contexts of mesh
+// symbols by the symbol before and of vertex coordinates by axis. Version 2 (still read): the same header;
+// its scene header's grid step and bound are raw float64 where version 3 has exact numbers. Version 1
+// (still read): a fixed 18-byte header with the coded size; its scene header's numbers are all raw
+// float64 (docs/cnb.md).
 constexpr size_t version_1_header_size = 18;
-constexpr uint8_t format_version = 3;
 
 // The whole file for a payload, coded as `choice` asks (the smaller of both for Coder::smallest).
 // Fills the report's size fields.
@@ -24,6 +25,7 @@ struct OpenedPayload {
   std::unique_ptr<ByteSource> source;  // yields the decoded payload byte by byte
   size_t size = 0;                     // decoded payload bytes the header promises
   uint8_t version = format_version;    // of the file: the payload's layout depends on it
+  bool arithmetic = false;             // coded by the arithmetic coder (else deflated)
 };
 
 // Checks the header, the length and the CRC before decoding anything. Throws FileError

@@ -22,6 +22,9 @@ struct CodingState {
   VertexValues mesh_values;
   GridPoint last_mesh_vertex{0, 0, 0};
   bool trim_extrapolation = true;  // writer only: whether faces may take the extrapolating trim predictor
+  // The format version being read or written: from 4 on, mesh symbols and vertex coordinates take the
+  // contexts by previous symbol and by axis (cnb_stream.hpp).
+  uint8_t version = format_version;
 };
 
 // A surface's net on the grid of step q, predicted along rows (each point from the one before it, u

@@ -23,8 +23,9 @@ struct CnbOptions {
   // does so at D/4, so convert takes the largest scale that leaves its decoded scene as sewn as the scene
   // itself (converters/cnb_coding).
   double quantisation_scale = 1.0;
-  // The entropy stage: the smaller of deflate and the adaptive arithmetic coder, or one of them.
-  enum class Coder { smallest, deflate, arithmetic } coder = Coder::smallest;
+  // The entropy stage: the smallest of deflate, the adaptive arithmetic coder with every model starting at
+  // ½, and the same coder starting from the coder prior (cnb_coder_prior.hpp), or one of them.
+  enum class Coder { smallest, deflate, arithmetic, arithmetic_prior } coder = Coder::smallest;
 };
 
 // What the writer chose and what it guarantees.
@@ -38,7 +39,8 @@ struct CnbWriteReport {
   double deviation_bound() const { return point_bound + std::max(trim_bound, mesh_bound); }
   size_t payload_bytes = 0;     // decoded payload
   size_t deflate_bytes = 0;     // the payload deflated (0 when not tried)
-  size_t arithmetic_bytes = 0;  // the payload arithmetic-coded (0 when not tried)
+  size_t arithmetic_bytes = 0;  // the payload arithmetic-coded from ½ (0 when not tried)
+  size_t arithmetic_prior_bytes = 0;  // the payload arithmetic-coded from the coder prior (0 when not tried)
   size_t file_bytes = 0;
   int parallelogram_nets = 0, row_nets = 0;  // which predictor each surface's net took
   int quantised_weight_nets = 0;              // surfaces whose weights were rounded (not kept exactly)

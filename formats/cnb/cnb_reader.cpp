@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/geometry_error.hpp"
+#include "formats/cnb/cnb_colours.hpp"
 #include "formats/cnb/cnb_container.hpp"
 #include "formats/cnb/cnb_geometry.hpp"
 #include "formats/cnb/cnb_scene_layout.hpp"
@@ -57,16 +58,7 @@ struct SceneDecoder {
               at);
   }
 
-  Colour colour() {
-    double c[3];
-    for (double& v : c) {
-      const size_t at = in.offset();
-      const uint64_t n = in.varuint(Field::raw);
-      if (n > 65535) in.fail("colour component " + std::to_string(n) + " above 65535", at);
-      v = static_cast<double>(n) / 65535.0;
-    }
-    return {c[0], c[1], c[2]};
-  }
+  Colour colour() { return read_colour(in, colours, state.version); }
 
   double finite_float(const char* what) {
     const size_t at = in.offset();
@@ -186,16 +178,36 @@ struct SceneDecoder {
     for (size_t i = 0; i < child_count; ++i) n.children.push_back(node(path, depth + 1));
     return n;
   }
+
+  ColourCache colours;  // met so far in the file (version 4)
 };
 
 }  // namespace
 
-Scene read_cnb(const std::string& bytes, const std::string& name) {
-  OpenedPayload payload = open_payload(bytes, name);
-  ByteReader in(*payload.source, payload.size);
+namespace {
+
+// A payload source that also keeps each byte and the context it was read in.
+class RecordingSource : public ByteSource {
+ public:
+  RecordingSource(ByteSource& source, CnbPayload& record) : source_(source), record_(record) {}
+  uint8_t next(int context) override {
+    const uint8_t b = source_.next(context);
+    record_.bytes.push_back(static_cast<char>(b));
+    record_.contexts.push_back(static_cast<uint8_t>(context));
+    return b;
+  }
+
+ private:
+  ByteSource& source_;
+  CnbPayload& record_;
+};
+
+Scene decode_scene(ByteSource& source, const OpenedPayload& payload, const std::string& name) {
+  ByteReader in(source, payload.size);
   try {
     Scene scene;
     SceneDecoder decoder{in, 0, {}, {}, 0, numbers_per_payload_byte * payload.size + numbers_allowance};
+    decoder.state.version = payload.version;
     // Version 1 wrote the units' sizes and D as raw float64, versions 2 and 3 as exact numbers; versions 1
     // and 2 wrote q and the bound as raw float64, version 3 q as a float32 and the bound as an exact number.
     auto number = [&](const char* what) {
@@ -219,6 +231,23 @@ Scene read_cnb(const std::string& bytes, const std::string& name) {
   } catch (const PayloadError& e) {
     throw FileError(name + ": decoded byte " + std::to_string(e.offset) + ": " + e.what());
   }
+}
+
+}  // namespace
+
+Scene read_cnb(const std::string& bytes, const std::string& name) {
+  const OpenedPayload payload = open_payload(bytes, name);
+  return decode_scene(*payload.source, payload, name);
+}
+
+CnbPayload read_cnb_payload(const std::string& bytes, const std::string& name) {
+  const OpenedPayload payload = open_payload(bytes, name);
+  CnbPayload record;
+  record.version = payload.version;
+  record.arithmetic = payload.arithmetic;
+  RecordingSource source(*payload.source, record);
+  decode_scene(source, payload, name);
+  return record;
 }
 
 }  // namespace cadnurbs

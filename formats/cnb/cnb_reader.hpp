@@ -1,6 +1,8 @@
 #pragma once
 // Reads a .cnb file (docs/cnb.md) back into a scene.
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/scene.hpp"
 
@@ -11,5 +13,16 @@ namespace cadnurbs {
 // the payload behind them (N counted in the decoded payload), never allocating more than the remaining
 // bytes can hold. Every decoded shape is validated (an invalid one is refused the same way).
 Scene read_cnb(const std::string& bytes, const std::string& name);
+
+// The decoded payload of a file as read_cnb parses it: each byte and the coder context it is read in
+// (docs/cnb.md, "The arithmetic coder"), for tools that study or train the coder
+// (bench/cnb_coder_prior.cpp). Refuses what read_cnb refuses, in the same words.
+struct CnbPayload {
+  std::string bytes;
+  std::vector<uint8_t> contexts;  // one per byte
+  uint8_t version = 0;            // the file's format version
+  bool arithmetic = false;        // whether the file was arithmetic-coded (else deflated)
+};
+CnbPayload read_cnb_payload(const std::string& bytes, const std::string& name);
 
 }  // namespace cadnurbs

@@ -9,7 +9,16 @@ namespace {
 int first_context(Field f) { return 2 * static_cast<int>(f); }
 int continuation_context(Field f) { return 2 * static_cast<int>(f) + 1; }
 int float_context(int byte_index) { return 2 * field_count + byte_index; }
+constexpr int first_symbol_context = 2 * field_count + 8;
+constexpr int first_axis_context = first_symbol_context + mesh_symbol_count;
 }  // namespace
+
+int symbol_context(uint8_t previous) { return first_symbol_context + previous; }
+
+int axis_context(Field field, int axis) {
+  if (axis == 0) return first_context(field);
+  return first_axis_context + (field == Field::mesh_rank ? 0 : 2) + axis - 1;
+}
 
 void ByteWriter::put(uint8_t value, int context) {
   bytes_.push_back(static_cast<char>(value));
@@ -21,8 +30,14 @@ void ByteWriter::byte(uint8_t value, Field field, bool second) {
   put(value, second ? continuation_context(field) : first_context(field));
 }
 
-void ByteWriter::varuint(uint64_t value, Field field) {
-  int context = first_context(field);
+void ByteWriter::byte_in(uint8_t value, int context) { put(value, context); }
+
+void ByteWriter::varsint_in(int64_t value, Field field, int first) { varuint_from(zigzag(value), field, first); }
+
+void ByteWriter::varuint(uint64_t value, Field field) { varuint_from(value, field, first_context(field)); }
+
+void ByteWriter::varuint_from(uint64_t value, Field field, int first) {
+  int context = first;
   while (value >= 0x80) {
     put(static_cast<uint8_t>(value | 0x80), context);
     value >>= 7;
@@ -64,11 +79,17 @@ uint8_t ByteReader::byte(Field field, bool second) {
   return take(second ? continuation_context(field) : first_context(field));
 }
 
-uint64_t ByteReader::varuint(Field field) {
+uint8_t ByteReader::byte_in(int context) { return take(context); }
+
+int64_t ByteReader::varsint_in(Field field, int first) { return unzigzag(varuint_from(field, first)); }
+
+uint64_t ByteReader::varuint(Field field) { return varuint_from(field, first_context(field)); }
+
+uint64_t ByteReader::varuint_from(Field field, int first) {
   const size_t start = offset_;
   uint64_t value = 0;
   for (int shift = 0;; shift += 7) {
-    const uint8_t b = take(shift == 0 ? first_context(field) : continuation_context(field));
+    const uint8_t b = take(shift == 0 ? first : continuation_context(field));
     if (shift == 63 && b > 1) fail("varint larger than 64 bits", start);
     value |= static_cast<uint64_t>(b & 0x7F) << shift;
     if (!(b & 0x80)) return value;

@@ -19,9 +19,22 @@ enum class Field : uint8_t {
   structure, count, text, knot, weight, point, trim, index, raw, symbol, mesh_point, mesh_rank, mesh_axes,
   mesh_member
 };
+// The format version writers write (docs/cnb.md); readers pass on the file's, since the contexts
+// bytes take depend on it.
+constexpr uint8_t format_version = 4;
+
 constexpr int field_count = 14;
-// Contexts: 2 per field (first / continuation byte of a varint) plus 8 for the bytes of a float64.
-constexpr int context_count = 2 * field_count + 8;
+// Contexts: 2 per field (first / continuation byte of a varint), 8 for the bytes of a float64, then (format
+// version 4 on) one per mesh symbol for the symbol after it, and the first byte of a vertex's rank and of
+// its difference from the prediction on axes 1 and 2 (axis 0 keeps the field's own).
+constexpr int mesh_symbol_count = 7;
+constexpr int context_count = 2 * field_count + 8 + mesh_symbol_count + 4;
+
+// The context of a mesh symbol that follows `previous` (< mesh_symbol_count), version 4 on.
+int symbol_context(uint8_t previous);
+// The context of the first byte of a vertex coordinate's rank (Field::mesh_rank) or difference
+// (Field::mesh_point) on `axis`, version 4 on; axis 0 is the field's first context.
+int axis_context(Field field, int axis);
 
 // A damaged or impossible payload: where (byte offset in the decoded payload) and why.
 struct PayloadError : std::runtime_error {
@@ -39,6 +52,10 @@ class ByteWriter {
   void byte(uint8_t value, Field field, bool second);
   void varuint(uint64_t value, Field field);
   void varsint(int64_t value, Field field);  // zig-zag: 0, -1, 1, -2, ... -> 0, 1, 2, 3, ...
+  // A byte in the given context; a varsint whose first byte takes `first_context` and whose continuation
+  // bytes take the field's.
+  void byte_in(uint8_t value, int context);
+  void varsint_in(int64_t value, Field field, int first_context);
   void float64(double value);
   void float32(float value);  // in the contexts of a float64's upper four bytes
   void text(const std::string& value);
@@ -49,6 +66,7 @@ class ByteWriter {
 
  private:
   void put(uint8_t value, int context);
+  void varuint_from(uint64_t value, Field field, int first_context);
   std::string bytes_;
   std::vector<uint8_t> contexts_;
 };
@@ -70,6 +88,8 @@ class ByteReader {
   uint8_t byte(Field field, bool second);
   uint64_t varuint(Field field);
   int64_t varsint(Field field);
+  uint8_t byte_in(int context);  // as ByteWriter::byte_in and varsint_in
+  int64_t varsint_in(Field field, int first_context);
   double float64();
   float float32();
   std::string text();
@@ -84,6 +104,7 @@ class ByteReader {
 
  private:
   uint8_t take(int context);
+  uint64_t varuint_from(Field field, int first_context);
   ByteSource& source_;
   size_t size_;
   size_t offset_ = 0;

@@ -41,6 +41,7 @@ enum Symbol : uint8_t {
   reached = 6,          // the gate's far triangle is already in the region
 };
 constexpr uint8_t symbol_count = 7;
+static_assert(symbol_count == mesh_symbol_count, "a context for the symbols after each symbol");
 
 // One edge of the border, directed so that the region lies on its left: from -> to in the triangle
 // `apex` completes. The encoder also keeps the edge's half-edge in the input mesh. In a mesh group, `member`
@@ -261,9 +262,9 @@ class TraversalEncoder {
     return static_cast<size_t>(std::count(used.begin(), used.end(), true));
   }
 
-  // A symbol, in the model of those that follow a new vertex or of those that follow anything else.
+  // A symbol, in the model of those that follow the symbol before it.
   void symbol(uint8_t s) {
-    out_.byte(s, Field::symbol, previous_ != new_vertex);
+    out_.byte_in(s, symbol_context(previous_));
     previous_ = s;
   }
 
@@ -271,7 +272,7 @@ class TraversalEncoder {
   void vertex(int v, const GridPoint& predicted) {
     if (number_[v] < 0) {
       symbol(new_vertex);
-      values_.write(out_, grid_[v], predicted);
+      values_.write(out_, grid_[v], predicted, true);
       number_[v] = count_++;
       last_ = grid_[v];
     } else {
@@ -355,7 +356,7 @@ class TraversalDecoder {
   TraversalDecoder(ByteReader& in, double q, CodingState& state, int member_count = 0,
                    std::vector<int>* members = nullptr)
       : in_(in), q_(q), values_(state.mesh_values), last_(state.last_mesh_vertex), member_count_(member_count),
-        members_(members) {}
+        members_(members), by_previous_symbol_(state.version >= 4) {}
 
   TriangleMesh decode() {
     vertex_count_ = in_.count(4);
@@ -383,7 +384,7 @@ class TraversalDecoder {
     if (symbol == new_vertex) {
       if (grid_.size() >= vertex_count_)
         in_.fail("more vertices than the " + std::to_string(vertex_count_) + " declared", at);
-      const GridPoint p = values_.read(in_, predicted);
+      const GridPoint p = values_.read(in_, predicted, by_previous_symbol_);
       grid_.push_back(p);
       last_ = p;
       return static_cast<int>(grid_.size() - 1);
@@ -397,8 +398,12 @@ class TraversalDecoder {
     return static_cast<int>(grid_.size() - 1 - back);
   }
 
+  // Version 4 on: in the model of the symbols that follow the one before; before: of those that follow a
+  // new vertex or of those that follow anything else.
   uint8_t symbol() {
-    previous_ = in_.byte(Field::symbol, previous_ != new_vertex);
+    const size_t at = in_.offset();
+    previous_ = by_previous_symbol_ ? in_.byte_in(symbol_context(previous_)) : in_.byte(Field::symbol, previous_ != new_vertex);
+    if (by_previous_symbol_ && previous_ >= symbol_count) in_.fail("unknown mesh symbol " + std::to_string(previous_), at);
     return previous_;
   }
 
@@ -472,6 +477,7 @@ class TraversalDecoder {
   std::vector<int>* members_;
   int last_member_ = 0;
   bool member_after_other_ = false;
+  bool by_previous_symbol_;  // version 4's contexts (symbols by the one before, coordinates by axis)
 };
 
 }  // namespace

@@ -19,7 +19,7 @@ void VertexValues::remember(int axis, int64_t value, int64_t place) {
   if (!listed && sorted.size() < value_table_limit) sorted.insert(sorted.begin() + place, value);
 }
 
-void VertexValues::write(ByteWriter& out, const GridPoint& p, const GridPoint& predicted) {
+void VertexValues::write(ByteWriter& out, const GridPoint& p, const GridPoint& predicted, bool by_axis) {
   GridPoint place;
   uint8_t known = 0;
   for (int k = 0; k < 3; ++k) {
@@ -29,15 +29,14 @@ void VertexValues::write(ByteWriter& out, const GridPoint& p, const GridPoint& p
   }
   out.byte(known, Field::mesh_axes);
   for (int k = 0; k < 3; ++k) {
-    if (known & (1 << k))
-      out.varsint(place[k] - place_of(sorted_[k], predicted[k]), Field::mesh_rank);
-    else
-      out.varsint(p[k] - predicted[k], Field::mesh_point);
+    const Field field = known & (1 << k) ? Field::mesh_rank : Field::mesh_point;
+    const int64_t value = known & (1 << k) ? place[k] - place_of(sorted_[k], predicted[k]) : p[k] - predicted[k];
+    out.varsint_in(value, field, axis_context(field, by_axis ? k : 0));
     remember(k, p[k], place[k]);
   }
 }
 
-GridPoint VertexValues::read(ByteReader& in, const GridPoint& predicted) {
+GridPoint VertexValues::read(ByteReader& in, const GridPoint& predicted, bool by_axis) {
   const size_t known_at = in.offset();
   const uint8_t known = in.byte(Field::mesh_axes);
   if (known > 7) in.fail("vertex axis flags " + std::to_string(known) + " above 7", known_at);
@@ -45,7 +44,8 @@ GridPoint VertexValues::read(ByteReader& in, const GridPoint& predicted) {
   for (int k = 0; k < 3; ++k) {
     const size_t at = in.offset();
     if (known & (1 << k)) {
-      const int64_t rank = place_of(sorted_[k], predicted[k]) + in.varsint(Field::mesh_rank);
+      const int64_t rank =
+          place_of(sorted_[k], predicted[k]) + in.varsint_in(Field::mesh_rank, axis_context(Field::mesh_rank, by_axis ? k : 0));
       if (rank < 0 || rank >= static_cast<int64_t>(sorted_[k].size()))
         in.fail("vertex value rank " + std::to_string(rank) + " outside the " + std::to_string(sorted_[k].size()) +
                     " values met",
@@ -53,7 +53,7 @@ GridPoint VertexValues::read(ByteReader& in, const GridPoint& predicted) {
       p[k] = sorted_[k][static_cast<size_t>(rank)];
       remember(k, p[k], rank);
     } else {
-      p[k] = predicted[k] + in.varsint(Field::mesh_point);
+      p[k] = predicted[k] + in.varsint_in(Field::mesh_point, axis_context(Field::mesh_point, by_axis ? k : 0));
       if (std::abs(static_cast<double>(p[k])) > 0x1p52) in.fail("vertex coordinate outside the grid's range", at);
       remember(k, p[k], place_of(sorted_[k], p[k]));
     }

@@ -22,9 +22,10 @@ constexpr size_t value_table_limit = 4096;
 
 class VertexValues {
  public:
-  void write(ByteWriter& out, const GridPoint& p, const GridPoint& predicted);
+  // `by_axis` (format version 4 on): each axis's first byte of a rank or difference in its own context.
+  void write(ByteWriter& out, const GridPoint& p, const GridPoint& predicted, bool by_axis);
   // Refuses (PayloadError) a rank outside the table and a coordinate beyond 2^52 steps.
-  GridPoint read(ByteReader& in, const GridPoint& predicted);
+  GridPoint read(ByteReader& in, const GridPoint& predicted, bool by_axis);
 
  private:
   // Adds `value` to the axis's table at `place` (where lower_bound puts it) unless it is listed there.

@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "formats/cnb/cnb_colours.hpp"
 #include "formats/cnb/cnb_container.hpp"
 #include "formats/cnb/cnb_geometry.hpp"
 #include "formats/cnb/cnb_quantisation.hpp"
@@ -29,10 +30,7 @@ struct SceneEncoder {
   CnbWriteReport& report;
   CodingState state;
 
-  void colour(const Colour& c) {
-    for (double v : {c.r, c.g, c.b})
-      out.varuint(static_cast<uint64_t>(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0)), Field::raw);
-  }
+  void colour(const Colour& c) { write_colour(out, c, colours); }
 
   // Canonical bytes of each geometry written so far (coded from a fresh state, so equal geometry gives
   // equal bytes wherever it stands) -> its shape number.
@@ -161,6 +159,8 @@ struct SceneEncoder {
     out.varuint(n.children.size(), Field::count);
     for (const auto& child : n.children) node(child, world);
   }
+
+  ColourCache colours;  // met so far in the file (version 4)
 };
 
 // The file with trim points predicted by the previous point only, or per face by whichever of that and

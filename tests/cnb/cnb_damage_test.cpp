@@ -1,7 +1,6 @@
 // Damaged and truncated .cnb files: each refused with one FileError line naming the file, the byte and
 // what is wrong; payloads that claim more than their bytes can hold refused before allocating.
 #include <gtest/gtest.h>
-#include <zlib.h>
 
 #include "formats/cnb/cnb_container.hpp"
 #include "formats/cnb/cnb_numbers.hpp"
@@ -9,6 +8,7 @@
 #include "formats/cnb/cnb_writer.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/vrml/vrml_reader.hpp"
+#include "tests/cnb/cnb_file_header.hpp"
 
 namespace cadnurbs {
 namespace {
@@ -31,36 +31,6 @@ std::string error_of(const std::string& bytes) {
     return e.what();
   }
   return "(read without error)";
-}
-
-// Where the version 2 and 3 header's CRC-32 lies: after the payload size's varuint at byte 6.
-size_t crc_offset(const std::string& file) {
-  size_t at = 6;
-  while (static_cast<uint8_t>(file[at]) & 0x80) ++at;
-  return at + 1;
-}
-
-// The file with its payload size replaced by `size` and its CRC made right again.
-std::string with_payload_size(const std::string& file, uint64_t size) {
-  const size_t crc_at = crc_offset(file);
-  std::string out = file.substr(0, 6);
-  for (uint64_t v = size;; v >>= 7) {
-    out.push_back(static_cast<char>((v & 0x7F) | (v >= 0x80 ? 0x80 : 0)));
-    if (v < 0x80) break;
-  }
-  const std::string coded = file.substr(crc_at + 4);
-  uLong c = crc32(0L, reinterpret_cast<const Bytef*>(out.data()), static_cast<uInt>(out.size()));
-  c = crc32(c, reinterpret_cast<const Bytef*>(coded.data()), static_cast<uInt>(coded.size()));
-  for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>(c >> (8 * i)));
-  return out + coded;
-}
-
-uint64_t payload_size(const std::string& file) {
-  uint64_t v = 0;
-  for (size_t at = 6, shift = 0;; ++at, shift += 7) {
-    v |= static_cast<uint64_t>(static_cast<uint8_t>(file[at]) & 0x7F) << shift;
-    if (!(static_cast<uint8_t>(file[at]) & 0x80)) return v;
-  }
 }
 
 TEST(CnbDamage, TruncatedFiles) {
@@ -88,7 +58,7 @@ TEST(CnbDamage, EveryFlippedByteIsRefused) {
     damaged[at] = static_cast<char>(damaged[at] ^ 0x24);
     std::string expected;
     if (at < 4) expected = name + ": byte " + std::to_string(at) + ": not a .cnb file (the magic number is \\x89CNB)";
-    else if (at == 4) expected = name + ": byte 4: version " + std::to_string(3 ^ 0x24) + " is not one this reader knows (1, 2, 3)";
+    else if (at == 4) expected = name + ": byte 4: version " + std::to_string(4 ^ 0x24) + " is not one this reader knows (1, 2, 3, 4)";
     else expected = crc_message;
     ASSERT_EQ(error_of(damaged), expected) << "byte " << at;
   }
@@ -159,7 +129,7 @@ TEST(CnbDamage, VersionOneFilesStillRead) {
 
 // A payload's scene header (unit mm, D = q = bound = 1; version 3: sizes, D and the bound as exact
 // numbers, q as a float32) and the root node's name and flags.
-cnb::ByteWriter scene_header_and_root() {
+cnb::ByteWriter scene_header_and_root(uint8_t root_flags = 0) {
   cnb::ByteWriter w;
   w.text("mm");
   cnb::write_exact_number(w, 1.0);
@@ -169,7 +139,7 @@ cnb::ByteWriter scene_header_and_root() {
   w.float32(1.0f);
   cnb::write_exact_number(w, 1.0);
   w.text("");
-  w.byte(0);
+  w.byte(root_flags);
   return w;
 }
 
@@ -196,8 +166,7 @@ TEST(CnbDamage, VersionTwoFilesStillRead) {
   w.byte(0);                        // no normals
   w.varuint(0, cnb::Field::count);  // no children
   std::string file = cnb::pack(w, CnbOptions::Coder::deflate, nullptr);
-  file[4] = 2;
-  file = with_payload_size(file, payload_size(file));  // the CRC made right for the version byte
+  file = with_version(file, 2);
   const Scene scene = read_cnb(file, name);
   const auto& mesh = std::get<TriangleMesh>(scene.root.shapes.at(0).geometry);
   ASSERT_EQ(mesh.positions.size(), 3u);
@@ -285,6 +254,24 @@ void one_triangle_group(cnb::ByteWriter& w, const std::vector<std::string>& name
 }
 
 // A mesh group must hold 2 to 255 meshes, all among the node's shapes, and each mesh a triangle.
+// A version 4 colour naming a place beyond the colours met, or a component beyond its scale.
+TEST(CnbDamage, ColoursThatCannotBeRight) {
+  const auto error_for = [](std::initializer_list<uint64_t> colour) {
+    cnb::ByteWriter w = scene_header_and_root(1);  // the root has a colour
+    const size_t at = w.bytes().size();
+    for (uint64_t v : colour) w.varuint(v, cnb::Field::raw);
+    w.varuint(0, cnb::Field::count);  // no shapes
+    w.varuint(0, cnb::Field::count);  // no children
+    return std::pair{at, error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr))};
+  };
+  const auto [cached_at, cached] = error_for({3});
+  EXPECT_EQ(cached, name + ": decoded byte " + std::to_string(cached_at) + ": colour 1 back, with 0 met");
+  const auto [thousandths_at, thousandths] = error_for({1, 500, 1001, 0});
+  EXPECT_EQ(thousandths, name + ": decoded byte " + std::to_string(thousandths_at + 3) + ": colour component 1001 above 1000");
+  const auto [bytes_at, bytes] = error_for({2, 256, 0, 0});
+  EXPECT_EQ(bytes, name + ": decoded byte " + std::to_string(bytes_at + 1) + ": colour component 256 above 255");
+}
+
 TEST(CnbDamage, MeshGroupsThatCannotBeRight) {
   // A node of `shapes` shapes whose first record is a group claiming `group` of them.
   auto group_count_error = [](int shapes, int group) {

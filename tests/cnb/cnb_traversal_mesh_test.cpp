@@ -18,10 +18,14 @@
 #include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "core/bounding_box.hpp"
 #include "core/flatten_transforms.hpp"
+#include "formats/cnb/adaptive_arithmetic_coder.hpp"
 #include "formats/cnb/cnb_reader.hpp"
+#include "formats/cnb/cnb_stream.hpp"
 #include "formats/cnb/cnb_writer.hpp"
 #include "formats/draco/draco_mesh_codec.hpp"
+#include "formats/common/file_io.hpp"
 #include "formats/step/step_reader.hpp"
+#include "tests/cnb/cnb_file_header.hpp"
 
 namespace cadnurbs {
 namespace {
@@ -140,6 +144,46 @@ TEST(CnbTraversalMesh, UnusedVerticesAreNotKeptAndNormalsKeepThePlainCoding) {
   const Decoded plain = round_trip(with_normals, 0.01);
   EXPECT_EQ(plain.mesh.positions.size(), 10u);  // the plain coding keeps every vertex, in order
   EXPECT_EQ(plain.mesh.corner_normals.size(), with_normals.corner_normals.size());
+}
+
+// Version 3 coded mesh symbols in two contexts (after a new vertex, after anything else) and each vertex
+// coordinate's first byte in its field's one; version 4 by the symbol before and by axis. A version 3 file,
+// made from a version 4 payload with its contexts mapped back, still reads to the same mesh; read as
+// version 4, the same bytes do not.
+TEST(CnbTraversalMesh, VersionThreeContextsStillRead) {
+  CnbOptions options;
+  options.max_deviation = 0.01;
+  options.coder = CnbOptions::Coder::arithmetic;
+  const std::string v4 = write_cnb(scene_of(torus(24, 12)), options);
+  const CnbPayload payload = read_cnb_payload(v4, "torus.cnb");
+  cnb::ByteWriter old_symbol;  // version 3's symbol contexts: after a new vertex, after anything else
+  old_symbol.byte(0, cnb::Field::symbol, false);
+  old_symbol.byte(0, cnb::Field::symbol, true);
+  std::vector<uint8_t> contexts = payload.contexts;
+  for (auto& c : contexts) {
+    for (int s = 0; s < cnb::mesh_symbol_count; ++s)
+      if (c == cnb::symbol_context(static_cast<uint8_t>(s))) c = old_symbol.contexts()[s == 0 ? 0 : 1];
+    for (auto field : {cnb::Field::mesh_rank, cnb::Field::mesh_point})
+      for (int axis = 1; axis < 3; ++axis)
+        if (c == cnb::axis_context(field, axis)) c = static_cast<uint8_t>(cnb::axis_context(field, 0));
+  }
+  const std::string coded = cnb::arithmetic_encode(payload.bytes, contexts, cnb::uniform_models());
+  const size_t coded_at = crc_offset(v4) + 4;
+  ASSERT_NE(coded, v4.substr(coded_at));  // the contexts change the coding
+  const std::string v3 = with_version(v4.substr(0, coded_at) + coded, 3);
+  const auto mesh_of = [](const std::string& file) {
+    return std::get<TriangleMesh>(read_cnb(file, "torus.cnb").root.shapes.at(0).geometry);
+  };
+  const TriangleMesh written = mesh_of(v4), old = mesh_of(v3);
+  EXPECT_EQ(old.positions, written.positions);
+  EXPECT_EQ(old.triangles, written.triangles);
+  bool same_as_version_4 = false;
+  try {
+    const TriangleMesh misread = mesh_of(with_version(v3, 4));
+    same_as_version_4 = misread.positions == written.positions && misread.triangles == written.triangles;
+  } catch (const FileError&) {
+  }
+  EXPECT_FALSE(same_as_version_4);
 }
 
 // Arbitrary triangle sets (shared corners in every way a soup allows: edges used by one, two or many

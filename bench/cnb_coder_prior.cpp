@@ -1,0 +1,94 @@
+// The coder prior of .cnb format version 4 (formats/cnb/cnb_coder_prior.hpp), made and measured.
+//
+//   cnb_coder_prior table FILE.cnb...   prints cnb_coder_prior_table.inc: for each context and bit-tree
+//                                       model, the level nearest the share of 0 bits it saw in the files'
+//                                       payloads ((zeros + ½) / (bits + 1)); "." where it saw fewer than 2
+//   cnb_coder_prior cost FILE.cnb...    for each file, its payload arithmetic-coded with every model at ½
+//                                       (versions 1 to 3) and from the prior (version 4), in bytes
+//
+// bench/cnb_coder_prior.sh runs `table` on the training files. The payloads are read back with their
+// contexts by read_cnb_payload, so a file of any version trains alike.
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "formats/cnb/adaptive_arithmetic_coder.hpp"
+#include "formats/cnb/cnb_coder_prior.hpp"
+#include "formats/cnb/cnb_reader.hpp"
+
+using namespace cadnurbs;
+
+namespace {
+
+CnbPayload payload_of(const char* path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  return read_cnb_payload(bytes.str(), path);
+}
+
+int table(int count, char** paths) {
+  const size_t models = static_cast<size_t>(cnb::context_count) * 256;
+  std::vector<double> zeros(models, 0), bits(models, 0);
+  for (int i = 0; i < count; ++i) {
+    const CnbPayload p = payload_of(paths[i]);
+    for (size_t k = 0; k < p.bytes.size(); ++k) {
+      const uint8_t value = static_cast<uint8_t>(p.bytes[k]);
+      unsigned node = 1;
+      for (int b = 7; b >= 0; --b) {
+        const bool bit = (value >> b) & 1;
+        const size_t m = static_cast<size_t>(p.contexts[k]) * 256 + node;
+        bits[m] += 1;
+        if (!bit) zeros[m] += 1;
+        node = 2 * node + bit;
+      }
+    }
+  }
+  std::printf("// Made by bench/cnb_coder_prior.sh from %d files; part of .cnb format version 4\n", count);
+  std::printf("// (cnb_coder_prior.hpp): do not edit. One string per context (2 per field, then the 8 float64\n");
+  std::printf("// bytes), one character per bit-tree model (node 1 to 255): a level 0-9a-f, or . for a model the\n");
+  std::printf("// training met fewer than 2 times.\n");
+  std::printf("constexpr int coder_prior_contexts = %d;\n", cnb::context_count);
+  std::printf("constexpr const char* coder_prior_levels[coder_prior_contexts] = {\n");
+  for (int c = 0; c < cnb::context_count; ++c) {
+    std::string levels;
+    for (int node = 1; node < 256; ++node) {
+      const size_t m = static_cast<size_t>(c) * 256 + node;
+      levels += bits[m] < 2 ? '.' : "0123456789abcdef"[cnb::prior_level((zeros[m] + 0.5) / (bits[m] + 1))];
+    }
+    std::printf("    \"%s\",\n", levels.c_str());
+  }
+  std::printf("};\n");
+  return 0;
+}
+
+int cost(int count, char** paths) {
+  size_t uniform_total = 0, prior_total = 0;
+  for (int i = 0; i < count; ++i) {
+    const CnbPayload p = payload_of(paths[i]);
+    const size_t uniform = cnb::arithmetic_encode(p.bytes, p.contexts, cnb::uniform_models()).size();
+    const size_t prior = cnb::arithmetic_encode(p.bytes, p.contexts, cnb::coder_prior_models()).size();
+    std::printf("%s\t%zu\t%zu\t%zu\n", paths[i], p.bytes.size(), uniform, prior);
+    uniform_total += uniform;
+    prior_total += prior;
+  }
+  std::printf("all\t\t%zu\t%zu\n", uniform_total, prior_total);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "";
+  try {
+    if (mode == "table" && argc > 2) return table(argc - 2, argv + 2);
+    if (mode == "cost" && argc > 2) return cost(argc - 2, argv + 2);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cnb_coder_prior: %s\n", e.what());
+    return 1;
+  }
+  std::fprintf(stderr, "usage: cnb_coder_prior table|cost FILE.cnb...\n");
+  return 2;
+}
