@@ -9,25 +9,19 @@
 // bench/cnb_coder_prior.sh runs `table` on the training files. The payloads are read back with their
 // contexts by read_cnb_payload, so a file of any version trains alike.
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "formats/cnb/adaptive_arithmetic_coder.hpp"
 #include "formats/cnb/cnb_coder_prior.hpp"
 #include "formats/cnb/cnb_reader.hpp"
+#include "formats/common/file_io.hpp"
 
 using namespace cadnurbs;
 
 namespace {
 
-CnbPayload payload_of(const char* path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  return read_cnb_payload(bytes.str(), path);
-}
+CnbPayload payload_of(const char* path) { return read_cnb_payload(read_file(path), path); }
 
 int table(int count, char** paths) {
   const size_t models = static_cast<size_t>(cnb::context_count) * 256;

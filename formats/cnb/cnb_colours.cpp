@@ -11,6 +11,8 @@ namespace {
 
 // The tag before a version 4 colour; a tag of cached_colour + i names the colour i + 1 places back.
 enum ColourTag : uint8_t { sixteen_bits = 0, thousandths = 1, two_hundred_fifty_fifths = 2, cached_colour = 3 };
+// The whole steps per unit each value tag counts in.
+constexpr uint64_t steps_of[cached_colour] = {65535, 1000, 255};
 
 constexpr double half_step = 0.5 / 65535.0;  // the precision every colour is kept to
 
@@ -25,10 +27,12 @@ bool whole_steps(const std::array<double, 3>& c, double steps) {
   return true;
 }
 
-// The colour as the reader will decode it (so that the cache holds the same values on both sides).
-Colour decoded(const std::array<double, 3>& c, uint8_t tag) {
-  const double steps = tag == thousandths ? 1000.0 : tag == two_hundred_fifty_fifths ? 255.0 : 65535.0;
-  return {std::round(c[0] * steps) / steps, std::round(c[1] * steps) / steps, std::round(c[2] * steps) / steps};
+// The colour as the reader will decode it from `counts` whole steps of the tag (so that the cache holds the
+// same values on both sides).
+Colour decoded(const std::array<uint64_t, 3>& counts, uint8_t tag) {
+  const double steps = static_cast<double>(steps_of[tag]);
+  return {static_cast<double>(counts[0]) / steps, static_cast<double>(counts[1]) / steps,
+          static_cast<double>(counts[2]) / steps};
 }
 
 void remember(ColourCache& cache, const Colour& c, size_t place) {
@@ -41,23 +45,26 @@ void remember(ColourCache& cache, const Colour& c, size_t place) {
 
 void write_colour(ByteWriter& out, const Colour& colour, ColourCache& cache) {
   const auto c = components(colour);
-  const uint8_t tag = whole_steps(c, 255.0) ? two_hundred_fifty_fifths : whole_steps(c, 1000.0) ? thousandths : sixteen_bits;
-  const Colour value = decoded(c, tag);
+  uint8_t tag = sixteen_bits;  // the coarsest steps the colour is whole in: 255ths, then thousandths
+  for (uint8_t t : {two_hundred_fifty_fifths, thousandths})
+    if (tag == sixteen_bits && whole_steps(c, static_cast<double>(steps_of[t]))) tag = t;
+  std::array<uint64_t, 3> counts;
+  for (int k = 0; k < 3; ++k) counts[k] = static_cast<uint64_t>(std::lround(c[k] * static_cast<double>(steps_of[tag])));
+  const Colour value = decoded(counts, tag);
   const auto met = std::find(cache.recent.begin(), cache.recent.end(), value);
   const size_t place = static_cast<size_t>(met - cache.recent.begin());
   if (met != cache.recent.end()) {
     out.varuint(cached_colour + place, Field::raw);
   } else {
     out.varuint(tag, Field::raw);
-    const double steps = tag == thousandths ? 1000.0 : tag == two_hundred_fifty_fifths ? 255.0 : 65535.0;
-    for (double v : c) out.varuint(static_cast<uint64_t>(std::lround(v * steps)), Field::raw);
+    for (uint64_t n : counts) out.varuint(n, Field::raw);
   }
   remember(cache, value, place);
 }
 
 Colour read_colour(ByteReader& in, ColourCache& cache, uint8_t version) {
   const size_t tag_at = in.offset();
-  const uint64_t tag = version >= 4 ? in.varuint(Field::raw) : sixteen_bits;
+  const uint64_t tag = version >= 4 ? in.varuint(Field::raw) : uint64_t{sixteen_bits};
   if (tag >= cached_colour) {
     const uint64_t place = tag - cached_colour;
     if (place >= cache.recent.size())
@@ -67,16 +74,13 @@ Colour read_colour(ByteReader& in, ColourCache& cache, uint8_t version) {
     remember(cache, c, place);
     return c;
   }
-  const uint64_t steps = tag == thousandths ? 1000 : tag == two_hundred_fifty_fifths ? 255 : 65535;
-  double c[3];
-  for (double& v : c) {
+  std::array<uint64_t, 3> counts;
+  for (uint64_t& n : counts) {
     const size_t at = in.offset();
-    const uint64_t n = in.varuint(Field::raw);
-    if (n > steps)
-      in.fail("colour component " + std::to_string(n) + " above " + std::to_string(steps), at);
-    v = static_cast<double>(n) / static_cast<double>(steps);
+    n = in.varuint(Field::raw);
+    if (n > steps_of[tag]) in.fail("colour component " + std::to_string(n) + " above " + std::to_string(steps_of[tag]), at);
   }
-  const Colour colour{c[0], c[1], c[2]};
+  const Colour colour = decoded(counts, static_cast<uint8_t>(tag));
   if (version >= 4) remember(cache, colour, cache.recent.size());
   return colour;
 }

@@ -182,10 +182,6 @@ struct SceneDecoder {
   ColourCache colours;  // met so far in the file (version 4)
 };
 
-}  // namespace
-
-namespace {
-
 // A payload source that also keeps each byte and the context it was read in.
 class RecordingSource : public ByteSource {
  public:
@@ -206,7 +202,7 @@ Scene decode_scene(ByteSource& source, const OpenedPayload& payload, const std::
   ByteReader in(source, payload.size);
   try {
     Scene scene;
-    SceneDecoder decoder{in, 0, {}, {}, 0, numbers_per_payload_byte * payload.size + numbers_allowance};
+    SceneDecoder decoder{in, 0, {}, {}, 0, numbers_per_payload_byte * payload.size + numbers_allowance, {}};
     decoder.state.version = payload.version;
     // Version 1 wrote the units' sizes and D as raw float64, versions 2 and 3 as exact numbers; versions 1
     // and 2 wrote q and the bound as raw float64, version 3 q as a float32 and the bound as an exact number.

@@ -272,7 +272,7 @@ class TraversalEncoder {
   void vertex(int v, const GridPoint& predicted) {
     if (number_[v] < 0) {
       symbol(new_vertex);
-      values_.write(out_, grid_[v], predicted, true);
+      values_.write(out_, grid_[v], predicted, /*by_axis=*/true);  // the writer writes version 4
       number_[v] = count_++;
       last_ = grid_[v];
     } else {
@@ -356,7 +356,7 @@ class TraversalDecoder {
   TraversalDecoder(ByteReader& in, double q, CodingState& state, int member_count = 0,
                    std::vector<int>* members = nullptr)
       : in_(in), q_(q), values_(state.mesh_values), last_(state.last_mesh_vertex), member_count_(member_count),
-        members_(members), by_previous_symbol_(state.version >= 4) {}
+        members_(members), version_4_contexts_(state.version >= 4) {}
 
   TriangleMesh decode() {
     vertex_count_ = in_.count(4);
@@ -384,7 +384,7 @@ class TraversalDecoder {
     if (symbol == new_vertex) {
       if (grid_.size() >= vertex_count_)
         in_.fail("more vertices than the " + std::to_string(vertex_count_) + " declared", at);
-      const GridPoint p = values_.read(in_, predicted, by_previous_symbol_);
+      const GridPoint p = values_.read(in_, predicted, version_4_contexts_);
       grid_.push_back(p);
       last_ = p;
       return static_cast<int>(grid_.size() - 1);
@@ -402,8 +402,11 @@ class TraversalDecoder {
   // new vertex or of those that follow anything else.
   uint8_t symbol() {
     const size_t at = in_.offset();
-    previous_ = by_previous_symbol_ ? in_.byte_in(symbol_context(previous_)) : in_.byte(Field::symbol, previous_ != new_vertex);
-    if (by_previous_symbol_ && previous_ >= symbol_count) in_.fail("unknown mesh symbol " + std::to_string(previous_), at);
+    previous_ = version_4_contexts_ ? in_.byte_in(symbol_context(previous_))
+                                    : in_.byte(Field::symbol, previous_ != new_vertex);
+    // (Checked here, since the next symbol's context depends on it.)
+    if (version_4_contexts_ && previous_ >= symbol_count)
+      in_.fail("unknown mesh symbol " + std::to_string(previous_), at);
     return previous_;
   }
 
@@ -477,7 +480,7 @@ class TraversalDecoder {
   std::vector<int>* members_;
   int last_member_ = 0;
   bool member_after_other_ = false;
-  bool by_previous_symbol_;  // version 4's contexts (symbols by the one before, coordinates by axis)
+  bool version_4_contexts_;  // symbols by the one before, coordinates by axis
 };
 
 }  // namespace
