@@ -223,7 +223,10 @@ int run_convert(const std::vector<std::string>& args, const CommandContext& cont
     std::cout << out << ": " << r.bodies_meshed << " of " << r.bodies << " bodies (" << r.faces_meshed << " faces, "
               << r.polygons_meshed << " polygons) written as certified meshes within "
               << number_text(r.certified_deviation, 3) << " " << unit_name << made_from[static_cast<int>(r.chosen)]
-              << ", " << r.bytes() << " bytes (NURBS as they are: " << r.as_is_bytes << ")" << sewn << "\n";
+              << ", " << r.bytes() << " bytes (NURBS as they are: " << r.as_is_bytes << ")" << sewn;
+    if (coding.written.piece_copies > 0)
+      std::cout << "; " << coding.written.piece_copies << " mesh pieces coded as copies of others";
+    std::cout << "\n";
   };
   const ConversionResult result = convert_loaded(request, input, log);
   if (result.scene_graph) {

@@ -5,6 +5,7 @@
 #include "core/polygon_mesh.hpp"
 #include "core/triangle_mesh.hpp"
 #include "core/trimmed_surface.hpp"
+#include "formats/cnb/cnb_mesh_copies.hpp"
 #include "formats/cnb/cnb_numbers.hpp"
 #include "formats/cnb/cnb_stream.hpp"
 #include "formats/cnb/cnb_vertex_values.hpp"
@@ -22,6 +23,7 @@ struct CodingState {
   VertexValues mesh_values;
   GridPoint last_mesh_vertex{0, 0, 0};
   bool trim_extrapolation = true;  // writer only: whether faces may take the extrapolating trim predictor
+  bool piece_copies = true;        // writer only: whether mesh groups may code pieces as copies
   // The format version being read or written: from 4 on, mesh symbols and vertex coordinates take the
   // contexts by previous symbol and by axis (cnb_stream.hpp).
   uint8_t version = format_version;
@@ -64,10 +66,14 @@ TriangleMesh read_traversal_mesh(ByteReader& in, double q, CodingState& state, i
 // colours of one body) share its vertices and are traversed together, and each triangle's mesh coded
 // beside it. Decoded as the same meshes, each as read_traversal_mesh would decode it alone: the same
 // triangles, vertices on the grid q in the order the group's traversal meets them. 2..max_group_meshes
-// meshes; the reader refuses a mesh left without a triangle.
+// meshes; the reader refuses a mesh left without a triangle. From format version 5, pieces of a mesh that
+// are copies of another of its pieces (find_group_copies) are left out of the traversal and follow it as
+// records (shape kind 7); they decode after the mesh's other triangles. The reader refuses copies adding
+// more than `number_room` numbers.
 constexpr int max_group_meshes = 255;
-void write_mesh_group(ByteWriter& out, const std::vector<const TriangleMesh*>& meshes, double q, CodingState& state);
-std::vector<TriangleMesh> read_mesh_group(ByteReader& in, int mesh_count, double q, CodingState& state);
+void write_mesh_group(ByteWriter& out, const GroupCopies& group, double q, CodingState& state);
+std::vector<TriangleMesh> read_mesh_group(ByteReader& in, int mesh_count, double q, CodingState& state,
+                                          bool with_copies, size_t number_room);
 void write_polygon_mesh(ByteWriter& out, const PolygonMesh& mesh, double q);
 PolygonMesh read_polygon_mesh(ByteReader& in, double q);
 

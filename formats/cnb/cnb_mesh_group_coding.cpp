@@ -14,16 +14,17 @@
 #include <vector>
 
 #include "formats/cnb/cnb_geometry.hpp"
+#include "formats/cnb/cnb_mesh_copies.hpp"
 
 namespace cadnurbs::cnb {
 
-void write_mesh_group(ByteWriter& out, const std::vector<const TriangleMesh*>& meshes, double q, CodingState& state) {
+void write_mesh_group(ByteWriter& out, const GroupCopies& group, double q, CodingState& state) {
   TriangleMesh joined;
   std::vector<int> members;
   using Position = std::array<double, 3>;
   std::map<Position, std::vector<int>> joined_at;  // position -> union vertices there, in order made
-  for (size_t m = 0; m < meshes.size(); ++m) {
-    const TriangleMesh& mesh = *meshes[m];
+  for (size_t m = 0; m < group.kept.size(); ++m) {
+    const TriangleMesh& mesh = group.kept[m];
     std::vector<int> joined_vertex(mesh.positions.size(), -1);
     std::map<Position, size_t> taken;  // this mesh's vertices met at each position
     auto vertex = [&](int v) {
@@ -43,13 +44,16 @@ void write_mesh_group(ByteWriter& out, const std::vector<const TriangleMesh*>& m
       members.push_back(static_cast<int>(m));
     }
   }
-  write_traversal_mesh(out, joined, q, state, &members);
+  write_traversal_mesh(out, joined, q, state, group.kept.size() > 1 ? &members : nullptr);  // one: no members
+  if (!group.copies.empty()) write_piece_copies(out, group.copies);
 }
 
-std::vector<TriangleMesh> read_mesh_group(ByteReader& in, int mesh_count, double q, CodingState& state) {
+std::vector<TriangleMesh> read_mesh_group(ByteReader& in, int mesh_count, double q, CodingState& state,
+                                          bool with_copies, size_t number_room) {
   const size_t start = in.offset();
   std::vector<int> members;
-  const TriangleMesh joined = read_traversal_mesh(in, q, state, mesh_count, &members);
+  const TriangleMesh joined = read_traversal_mesh(in, q, state, mesh_count > 1 ? mesh_count : 0, &members);
+  members.resize(joined.triangles.size(), 0);
   std::vector<TriangleMesh> meshes(mesh_count);
   std::vector<std::vector<int>> own(mesh_count, std::vector<int>(joined.positions.size(), -1));
   for (size_t t = 0; t < joined.triangles.size(); ++t) {
@@ -69,6 +73,7 @@ std::vector<TriangleMesh> read_mesh_group(ByteReader& in, int mesh_count, double
     if (meshes[m].triangles.empty())
       in.fail("mesh " + std::to_string(m + 1) + " of a group of " + std::to_string(mesh_count) + " has no triangle",
               start);
+  if (with_copies) read_piece_copies(in, meshes, q, number_room);
   return meshes;
 }
 

@@ -45,6 +45,7 @@ struct CnbWriteReport {
   int parallelogram_nets = 0, row_nets = 0;  // which predictor each surface's net took
   int quantised_weight_nets = 0;              // surfaces whose weights were rounded (not kept exactly)
   int mesh_groups = 0;                        // records holding several meshes of a node (kind 6)
+  int piece_copies = 0;                       // pieces of a group's meshes coded as copies of others
   // Decoded payload bytes by what they hold: control point and vertex residuals, trim point residuals,
   // knots, weights (tables and indices), float64 values (transforms, header, raw knots, weight tables),
   // and the rest (structure, counts, names, indices).

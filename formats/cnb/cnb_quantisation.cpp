@@ -27,6 +27,14 @@ double point_step(const Scene& scene, const CnbOptions& options) {
          (std::sqrt(3.0) * largest_world_scale(scene));
 }
 
+double decimal_step(double largest) {
+  constexpr double hundredth = 0.01;
+  if (!(largest > 0) || !std::isfinite(largest)) return largest;
+  if (largest >= hundredth) return hundredth * std::floor(largest / hundredth + 1e-9);
+  const double n = std::ceil(hundredth / largest - 1e-9);
+  return hundredth / n <= largest ? hundredth / n : hundredth / (n + 1);
+}
+
 int trim_step_exponent(const NurbsSurface& surface, const CnbOptions& options, double world_scale) {
   check(options);
   const double bound = surface_derivative_bound(surface) * std::max(world_scale, 1e-300);

@@ -24,6 +24,13 @@ namespace cadnurbs::cnb {
 // q as above. Throws std::invalid_argument for D, trim_share or quantisation_scale out of range.
 double point_step(const Scene& scene, const CnbOptions& options);
 
+// The largest step not above `largest` that divides 1/100 of the scene's unit or is a whole multiple of
+// it: 0.01·m or 0.01/n. Parts drawn on decimal dimensions (a pitch of 0.5 or 2.54 mm) then place repeated
+// pins whole steps apart, so that pins rounded to the grid stay copies of each other (cnb_mesh_copies.hpp);
+// on an arbitrary step, rounding moves one pin's vertices differently from another's. The step is at
+// most 2x finer than `largest` (for `largest` in [0.005, 0.01)), and closer the further it is from there.
+double decimal_step(double largest);
+
 // e as above, for a face whose world transform scales by at most `world_scale`; clamped to [-100, 100].
 // A surface with L = 0 (a point) gets 1/1024 of its domain.
 int trim_step_exponent(const NurbsSurface& surface, const CnbOptions& options, double world_scale);

@@ -99,12 +99,13 @@ struct SceneDecoder {
   }
 
   // A mesh group's shapes (at most `room` of them: the node's shapes not yet read).
-  std::vector<Shape> mesh_group(const std::string& path, size_t start, size_t room) {
+  std::vector<Shape> mesh_group(const std::string& path, size_t start, size_t room, bool with_copies) {
     const size_t count_at = in.offset();
     const size_t count = in.count(3);
-    if (count < 2 || count > static_cast<size_t>(max_group_meshes) || count > room)
-      in.fail("a mesh group of " + std::to_string(count) + " shapes (2 to " + std::to_string(max_group_meshes) +
-                  ", and " + std::to_string(room) + " left in the node)",
+    const size_t fewest = with_copies ? 1 : 2;  // one mesh is a group only for its copies
+    if (count < fewest || count > static_cast<size_t>(max_group_meshes) || count > room)
+      in.fail("a mesh group of " + std::to_string(count) + " shapes (" + std::to_string(fewest) + " to " +
+                  std::to_string(max_group_meshes) + ", and " + std::to_string(room) + " left in the node)",
               count_at);
     std::vector<Shape> shapes(count);
     for (auto& s : shapes) {
@@ -114,7 +115,7 @@ struct SceneDecoder {
       s.name = in.text();
       if (flags & has_colour_flag) s.colour = colour();
     }
-    std::vector<TriangleMesh> meshes = read_mesh_group(in, static_cast<int>(count), q, state);
+    std::vector<TriangleMesh> meshes = read_mesh_group(in, static_cast<int>(count), q, state, with_copies, number_budget - numbers);
     for (size_t i = 0; i < count; ++i) {
       shapes[i].geometry = std::move(meshes[i]);
       accept(shapes[i], path, start);
@@ -126,7 +127,8 @@ struct SceneDecoder {
   std::vector<Shape> shapes(const std::string& path, size_t room) {
     const size_t start = in.offset();
     const uint8_t kind_byte = in.byte(Field::structure);
-    if (kind_byte == mesh_group_kind) return mesh_group(path, start, room);
+    if (kind_byte == mesh_group_kind || (kind_byte == mesh_group_with_copies_kind && state.version >= 5))
+      return mesh_group(path, start, room, kind_byte == mesh_group_with_copies_kind);
     const uint8_t kind = kind_byte & ~has_colour_flag;
     if (kind > traversal_mesh_kind) in.fail("unknown shape kind " + std::to_string(kind_byte), start);
     Shape s;

@@ -16,6 +16,8 @@ constexpr uint8_t traversal_mesh_kind = 5;
 // 6: a group of shapes whose triangle meshes are coded together (write_mesh_group); the node's shape count
 // counts each of them.
 constexpr uint8_t mesh_group_kind = 6;
+// 7 (format version 5 on): a mesh group whose union is followed by copies of pieces (cnb_mesh_copies.hpp).
+constexpr uint8_t mesh_group_with_copies_kind = 7;
 constexpr uint8_t has_colour_flag = 0x10;
 // Repeated shapes make the decoded scene larger than its payload: it may hold at most this many numbers
 // (coordinates, knots, weights, indices) per payload byte, plus a fixed allowance, so that a small file

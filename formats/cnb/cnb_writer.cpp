@@ -109,20 +109,31 @@ struct SceneEncoder {
     return end;
   }
 
-  void mesh_group(const std::vector<Shape>& shapes, const std::vector<std::string>& canonicals, size_t first,
-                  size_t end) {
-    out.byte(mesh_group_kind, Field::structure);
-    out.varuint(end - first, Field::count);
+  // The shapes from `first` to `end` (traversal-coded meshes) with the copies among their pieces, if the
+  // writer codes copies.
+  GroupCopies group_copies(const std::vector<Shape>& shapes, size_t first, size_t end) const {
     std::vector<const TriangleMesh*> meshes;
+    for (size_t i = first; i < end; ++i) meshes.push_back(&std::get<TriangleMesh>(shapes[i].geometry));
+    if (state.piece_copies) return find_group_copies(meshes, q);
+    GroupCopies none;
+    for (const TriangleMesh* mesh : meshes) none.kept.push_back(*mesh);
+    return none;
+  }
+
+  // A group of the shapes from `first` to `end`: two or more, or one with copies.
+  void mesh_group(const std::vector<Shape>& shapes, const std::vector<std::string>& canonicals, size_t first,
+                  size_t end, const GroupCopies& group) {
+    out.byte(group.copies.empty() ? mesh_group_kind : mesh_group_with_copies_kind, Field::structure);
+    out.varuint(end - first, Field::count);
     for (size_t i = first; i < end; ++i) {
       const Shape& s = shapes[i];
       out.byte(s.colour ? has_colour_flag : 0, Field::structure);
       out.text(s.name);
       if (s.colour) colour(*s.colour);
-      meshes.push_back(&std::get<TriangleMesh>(s.geometry));
       written.emplace(canonicals[i], shape_count++);
     }
-    write_mesh_group(out, meshes, q, state);
+    write_mesh_group(out, group, q, state);
+    report.piece_copies += static_cast<int>(group.copies.size());
     ++report.mesh_groups;
     report.mesh_bound = options.mesh_deviation;
   }
@@ -148,8 +159,9 @@ struct SceneEncoder {
     for (const auto& s : n.shapes) canonicals.push_back(canonical(s, scale));
     for (size_t i = 0; i < n.shapes.size();) {
       const size_t end = group_end(n.shapes, canonicals, i);
-      if (end - i >= 2) {
-        mesh_group(n.shapes, canonicals, i, end);
+      const GroupCopies group = end > i ? group_copies(n.shapes, i, end) : GroupCopies{};
+      if (end - i >= 2 || !group.copies.empty()) {
+        mesh_group(n.shapes, canonicals, i, end, group);
         i = end;
       } else {
         shape(n.shapes[i], canonicals[i], scale);
@@ -163,19 +175,26 @@ struct SceneEncoder {
   ColourCache colours;  // met so far in the file (version 4)
 };
 
-// The file with trim points predicted by the previous point only, or per face by whichever of that and
-// extrapolation leaves the smaller residuals.
-std::string encode(const Scene& scene, const CnbOptions& options, bool trim_extrapolation, CnbWriteReport& r) {
+// What the writer tries both ways and keeps the smaller file of.
+struct EncodingChoice {
+  bool trim_extrapolation = false;  // faces may take the extrapolating trim predictor (else the previous point)
+  bool piece_copies = true;         // mesh groups may code pieces as copies (cnb_mesh_copies.hpp)
+  bool decimal_grid = false;        // the step is decimal_step of the largest the bound allows
+};
+
+std::string encode(const Scene& scene, const CnbOptions& options, const EncodingChoice& choice, CnbWriteReport& r) {
   r = CnbWriteReport{};
-  // The step as the largest float32 not above it: 4 bytes in the header, and the same grid to 1e-7.
+  // The step as the float32 nearest the chosen one and not above the largest: 4 bytes in the header, and
+  // the same grid to 1e-7.
   const double largest_step = point_step(scene, options);
-  float step = static_cast<float>(largest_step);
+  float step = static_cast<float>(choice.decimal_grid ? decimal_step(largest_step) : largest_step);
   if (static_cast<double>(step) > largest_step) step = std::nextafter(step, 0.0f);
   const double q = step;
   r.point_step = q;
   r.point_bound = q * std::sqrt(3.0) / 2.0 * largest_world_scale(scene);
-  SceneEncoder encoder{ByteWriter{}, options, q, r, {}, {}, 0};
-  encoder.state.trim_extrapolation = trim_extrapolation;
+  SceneEncoder encoder{ByteWriter{}, options, q, r, {}, {}, 0, {}};
+  encoder.state.trim_extrapolation = choice.trim_extrapolation;
+  encoder.state.piece_copies = choice.piece_copies;
   encoder.node(scene.root, Eigen::Affine3d::Identity());
   // The scene header goes first; it states the bound, known once every face's trim grid is chosen.
   ByteWriter header;
@@ -210,14 +229,37 @@ std::string encode(const Scene& scene, const CnbOptions& options, bool trim_extr
 
 std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteReport* report) {
   validate(scene);
-  // Smaller residuals are not always fewer bytes: extrapolation breaks the repeats deflate finds.
-  // Both are written and the smaller kept.
-  CnbWriteReport plain_report, extrapolated_report;
-  std::string plain = encode(scene, options, false, plain_report);
-  std::string extrapolated = encode(scene, options, true, extrapolated_report);
-  const bool take_plain = plain.size() <= extrapolated.size();
-  if (report) *report = take_plain ? plain_report : extrapolated_report;
-  return take_plain ? plain : extrapolated;
+  // Smaller residuals are not always fewer bytes: extrapolation breaks the repeats deflate finds. And a
+  // piece coded as a copy leaves the traversal, so the meshes it touched code their shared vertices
+  // themselves: at a coarse D that can cost more than the copy saves. Each is written both ways where it
+  // matters, and the smallest kept.
+  // Copies of pins drawn a decimal pitch apart need a decimal grid (decimal_step) to stay copies after
+  // rounding, which a finer grid makes dearer elsewhere: tried where the file holds a mesh.
+  EncodingChoice choice, other_choice;
+  CnbWriteReport best_report, other_report;
+  std::string best = encode(scene, options, choice, best_report), other;
+  const auto try_other = [&] {
+    other = encode(scene, options, other_choice, other_report);
+    if (other.size() < best.size()) {
+      best = std::move(other);
+      best_report = other_report;
+      choice = other_choice;
+    }
+  };
+  other_choice.trim_extrapolation = true;
+  try_other();
+  if (best_report.mesh_bound > 0) {
+    other_choice = choice;
+    other_choice.decimal_grid = true;
+    try_other();
+  }
+  if (best_report.piece_copies > 0) {
+    other_choice = choice;
+    other_choice.piece_copies = false;
+    try_other();
+  }
+  if (report) *report = best_report;
+  return best;
 }
 
 }  // namespace cadnurbs

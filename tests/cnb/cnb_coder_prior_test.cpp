@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "formats/cnb/cnb_reader.hpp"
+#include "formats/cnb/cnb_stream.hpp"
 #include "formats/cnb/cnb_writer.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/vrml/vrml_reader.hpp"
@@ -108,7 +109,7 @@ TEST(CnbCoderPrior, PayloadsReadWithTheirContexts) {
     EXPECT_EQ(payload.bytes.size(), report.payload_bytes);
     EXPECT_EQ(payload.contexts.size(), payload.bytes.size());
     EXPECT_EQ(payload.arithmetic, coder != CnbOptions::Coder::deflate);
-    EXPECT_EQ(payload.version, 4);
+    EXPECT_EQ(payload.version, cnb::format_version);
   }
 }
 

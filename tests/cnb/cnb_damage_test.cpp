@@ -58,7 +58,8 @@ TEST(CnbDamage, EveryFlippedByteIsRefused) {
     damaged[at] = static_cast<char>(damaged[at] ^ 0x24);
     std::string expected;
     if (at < 4) expected = name + ": byte " + std::to_string(at) + ": not a .cnb file (the magic number is \\x89CNB)";
-    else if (at == 4) expected = name + ": byte 4: version " + std::to_string(4 ^ 0x24) + " is not one this reader knows (1, 2, 3, 4)";
+    else if (at == 4) expected = name + ": byte 4: version " + std::to_string(cnb::format_version ^ 0x24) +
+                            " is not one this reader knows (1, 2, 3, 4, 5)";
     else expected = crc_message;
     ASSERT_EQ(error_of(damaged), expected) << "byte " << at;
   }
@@ -233,16 +234,9 @@ TEST(CnbDamage, RepeatsBeyondTheNumberBudget) {
                 std::to_string(budget) + " numbers (256 per payload byte and 1048576)");
 }
 
-// A mesh group record (shape kind 6) of `names.size()` meshes whose traversal holds one triangle, of the
-// first mesh: the vertex count, the triangle count, three new vertices (no axis listed, each a difference from
-// the previous) and the triangle's member code 0 (the predicted one, the first mesh).
-void one_triangle_group(cnb::ByteWriter& w, const std::vector<std::string>& names) {
-  w.byte(6);
-  w.varuint(names.size(), cnb::Field::count);
-  for (const auto& n : names) {
-    w.byte(0);
-    w.text(n);
-  }
+// A traversal of one triangle: the vertex count, the triangle count, three new vertices (no axis listed,
+// each a difference from the previous).
+void one_triangle_traversal(cnb::ByteWriter& w) {
   w.varuint(3, cnb::Field::count);
   w.varuint(1, cnb::Field::count);
   for (int v = 0; v < 3; ++v) {
@@ -250,6 +244,18 @@ void one_triangle_group(cnb::ByteWriter& w, const std::vector<std::string>& name
     w.byte(0);  // no axis holds a listed value
     for (int k = 0; k < 3; ++k) w.varsint(k == v ? 1 : 0, cnb::Field::mesh_point);
   }
+}
+
+// A mesh group record (shape kind 6) of `names.size()` meshes whose traversal holds one triangle, of the
+// first mesh: its member code is 0 (the predicted one, the first mesh).
+void one_triangle_group(cnb::ByteWriter& w, const std::vector<std::string>& names) {
+  w.byte(6);
+  w.varuint(names.size(), cnb::Field::count);
+  for (const auto& n : names) {
+    w.byte(0);
+    w.text(n);
+  }
+  one_triangle_traversal(w);
   w.byte(0);  // the member: the predicted one
 }
 
@@ -314,6 +320,69 @@ TEST(CnbDamage, MeshGroupsThatCannotBeRight) {
     damaged.varuint(0, cnb::Field::count);
     EXPECT_EQ(error_of(cnb::pack(damaged, CnbOptions::Coder::deflate, nullptr)),
               name + ": decoded byte " + std::to_string(payload.size() - 1) + ": member 2 of a group of 2 meshes");
+  }
+}
+
+// A group with copies (shape kind 7) of one mesh, one triangle, then one copy record: mesh `member`,
+// source `source`, turn `turn`, no move. Returns the error and the offsets of the copy's fields.
+struct CopyFields {
+  std::string file, error;
+  size_t kind_at, member_at, source_at, turn_at;
+};
+CopyFields one_copy_error(uint64_t member, uint64_t source, uint8_t turn) {
+  cnb::ByteWriter w = scene_header_and_root();
+  w.varuint(1, cnb::Field::count);  // the node's shapes
+  const size_t kind_at = w.bytes().size();
+  w.byte(7);
+  w.varuint(1, cnb::Field::count);  // one mesh: a group for its copies
+  w.byte(0);
+  w.text("pads");
+  one_triangle_traversal(w);
+  // (one mesh: no member codes)
+  w.varuint(1, cnb::Field::count);  // one run of copies
+  CopyFields f;
+  f.kind_at = kind_at;
+  f.member_at = w.bytes().size();
+  w.varuint(member, cnb::Field::index);
+  f.source_at = w.bytes().size();
+  w.varuint(source, cnb::Field::index);
+  f.turn_at = w.bytes().size();
+  w.byte(turn);
+  w.varuint(0, cnb::Field::count);  // one copy in the run
+  for (int k = 0; k < 3; ++k) w.varsint(k == 0 ? 5 : 0, cnb::Field::point);
+  w.varuint(0, cnb::Field::count);  // children
+  f.file = cnb::pack(w, CnbOptions::Coder::deflate, nullptr);
+  f.error = error_of(f.file);
+  return f;
+}
+
+// Copies naming a mesh beyond the group, a turn beyond the 48, or a piece the mesh does not have.
+TEST(CnbDamage, CopiesThatCannotBeRight) {
+  {  // well formed: the triangle, and its copy 5 steps along x
+    const CopyFields f = one_copy_error(0, 0, 0);
+    ASSERT_EQ(f.error, "(read without error)");
+    const Scene scene = read_cnb(f.file, name);
+    ASSERT_EQ(scene.root.shapes.size(), 1u);
+    const auto& mesh = std::get<TriangleMesh>(scene.root.shapes[0].geometry);
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    ASSERT_EQ(mesh.positions.size(), 6u);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(mesh.positions[mesh.triangles[1][k]] - mesh.positions[mesh.triangles[0][k]], Eigen::Vector3d(5, 0, 0));
+    // Version 4 knew no shape kind 7.
+    EXPECT_EQ(error_of(with_version(f.file, 4)),
+              name + ": decoded byte " + std::to_string(f.kind_at) + ": unknown shape kind 7");
+  }
+  {
+    const CopyFields f = one_copy_error(1, 0, 0);
+    EXPECT_EQ(f.error, name + ": decoded byte " + std::to_string(f.member_at) + ": a copy in mesh 2 of a group of 1");
+  }
+  {
+    const CopyFields f = one_copy_error(0, 0, 48);
+    EXPECT_EQ(f.error, name + ": decoded byte " + std::to_string(f.turn_at) + ": copy turn 48 above 47");
+  }
+  {
+    const CopyFields f = one_copy_error(0, 1, 0);
+    EXPECT_EQ(f.error, name + ": decoded byte " + std::to_string(f.source_at) + ": copy source 1 beyond the 1 pieces of mesh 1");
   }
 }
 

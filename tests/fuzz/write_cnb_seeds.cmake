@@ -2,8 +2,9 @@
 # target's seeds, written by the given cadnurbs into OUTPUT (emptied first): every sample STEP file
 # (trimmed NURBS), every sample STL (meshes), and the corpus's NURBS VRML/X3D files that cadnurbs reads
 # (weights, several surfaces); each sample STEP file once more at --deviation 1 (mm), and the corpus's
-# splinecage.stp, whose bodies are written as traversal-coded meshes there, and io1-tu-203.stp, whose
-# colours are written there as a mesh group. Fails if one cannot be written.
+# splinecage.stp, whose bodies are written as traversal-coded meshes there, io1-tu-203.stp, whose
+# colours are written there as a mesh group, and dm1-id-214.stp, whose meshes hold pieces coded as copies
+# there (a mesh group with copies). Fails if one cannot be written.
 file(REMOVE_RECURSE ${OUTPUT})
 file(MAKE_DIRECTORY ${OUTPUT})
 file(GLOB inputs ${SAMPLES}/*.step ${SAMPLES}/*.stl)
@@ -17,7 +18,7 @@ foreach(input IN LISTS inputs)
   endif()
 endforeach()
 file(GLOB step_inputs ${SAMPLES}/*.step)
-list(APPEND step_inputs ${CORPUS}/step/splinecage.stp ${CORPUS}/step/io1-tu-203.stp)
+list(APPEND step_inputs ${CORPUS}/step/splinecage.stp ${CORPUS}/step/io1-tu-203.stp ${CORPUS}/step/dm1-id-214.stp)
 foreach(input IN LISTS step_inputs)
   get_filename_component(name ${input} NAME)
   execute_process(COMMAND ${CADNURBS} convert ${input} --deviation 1 -o ${OUTPUT}/${name}-coarse.cnb

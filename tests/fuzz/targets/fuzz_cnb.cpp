@@ -1,5 +1,5 @@
 // libFuzzer target over the .cnb reader (docs/cnb.md): every byte string goes to read_cnb twice, as it
-// is and with its header made right (version 1: the coded size and the CRC-32; versions 2 to 4: the CRC-32). Most mutations only break the CRC, which the
+// is and with its header made right (version 1: the coded size and the CRC-32; versions 2 to 5: the CRC-32). Most mutations only break the CRC, which the
 // reader checks before it decodes anything; the second reading takes them past it, to the decoder.
 // read_cnb must return or throw FileError (it promises never to allocate more than the remaining bytes can
 // hold). Anything else (a crash, a sanitizer report, another exception, a slow input, memory past the
@@ -34,7 +34,7 @@ std::string with_version_1_header_made_right(std::string bytes) {
   return bytes;
 }
 
-// `bytes` with a version 2, 3 or 4 header's CRC-32 (after the payload size's varuint at byte 6, over all before
+// `bytes` with a version 2 to 5 header's CRC-32 (after the payload size's varuint at byte 6, over all before
 // it and the coded bytes after it) set to agree; unchanged when the header does not fit.
 std::string with_version_2_header_made_right(std::string bytes) {
   size_t at = 6;
@@ -53,6 +53,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string bytes(reinterpret_cast<const char*>(data), size);
   read(bytes);
   if (size > 4 && bytes[4] == 1 && size >= 18) read(with_version_1_header_made_right(bytes));
-  if (size > 4 && (bytes[4] >= 2 && bytes[4] <= 4)) read(with_version_2_header_made_right(bytes));
+  if (size > 4 && (bytes[4] >= 2 && bytes[4] <= 5)) read(with_version_2_header_made_right(bytes));
   return 0;
 }
