@@ -24,6 +24,8 @@ struct CodingState {
   GridPoint last_mesh_vertex{0, 0, 0};
   bool trim_extrapolation = true;  // writer only: whether faces may take the extrapolating trim predictor
   bool piece_copies = true;        // writer only: whether mesh groups may code pieces as copies
+  bool mesh_periods = true;        // writer only: whether traversal-coded meshes may take a period
+  int periodic_meshes = 0;         // writer only: the traversal-coded meshes written with a period
   // The format version being read or written: from 4 on, mesh symbols and vertex coordinates take the
   // contexts by previous symbol and by axis (cnb_stream.hpp).
   uint8_t version = format_version;

@@ -46,6 +46,7 @@ struct CnbWriteReport {
   int quantised_weight_nets = 0;              // surfaces whose weights were rounded (not kept exactly)
   int mesh_groups = 0;                        // records holding several meshes of a node (kind 6)
   int piece_copies = 0;                       // pieces of a group's meshes coded as copies of others
+  int periodic_meshes = 0;                    // traversal-coded meshes whose vertices a period predicts
   // Decoded payload bytes by what they hold: control point and vertex residuals, trim point residuals,
   // knots, weights (tables and indices), float64 values (transforms, header, raw knots, weight tables),
   // and the rest (structure, counts, names, indices).

@@ -1,9 +1,9 @@
 // Triangle meshes coded by a traversal of their triangles (docs/cnb.md, "Traversal-coded triangle mesh"):
 // a region grows from one triangle across the edges of its border, and each step says in one symbol how
 // the triangle beyond the border edge (the gate) meets the region. Most steps add a new vertex (its
-// position predicted by completing the parallelogram of the gate's triangle) or close on the border's
-// neighbouring edge, so connectivity costs about a symbol per triangle and positions of box-like parts
-// mostly predict exactly.
+// position predicted by completing the parallelogram of the gate's triangle, or from the cell a period
+// before where the mesh repeats: cnb_mesh_period.hpp) or close on the border's neighbouring edge, so
+// connectivity costs about a symbol per triangle and positions of box-like parts mostly predict exactly.
 //
 // The symbols are those of Rossignac's Edgebreaker (C, L, R, E; IEEE TVCG 5(1), 1999) and the border
 // handling that of Gumhold and Strasser's cut-border machine (SIGGRAPH 1998): the border is a set of
@@ -16,6 +16,7 @@
 // certified meshes: bench/cnb_mesh_against_draco.cpp.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "formats/cnb/cnb_geometry.hpp"
+#include "formats/cnb/cnb_mesh_period.hpp"
 #include "formats/cnb/cnb_numbers.hpp"
 #include "formats/cnb/cnb_vertex_values.hpp"
 
@@ -215,7 +217,7 @@ class TraversalEncoder {
   // `members` (may be null): each triangle's mesh in a group, coded after the triangle.
   TraversalEncoder(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state,
                    const std::vector<int>* members)
-      : out_(out), mesh_(mesh), members_(members), values_(state.mesh_values), last_(state.last_mesh_vertex) {
+      : out_(out), mesh_(mesh), members_(members), state_(state), values_(state.mesh_values), last_(state.last_mesh_vertex) {
     grid_.reserve(mesh.positions.size());
     for (const auto& p : mesh.positions) grid_.push_back({on_grid(p.x(), q), on_grid(p.y(), q), on_grid(p.z(), q)});
     pair_half_edges();
@@ -225,6 +227,14 @@ class TraversalEncoder {
     const size_t triangles = mesh_.triangles.size();
     out_.varuint(used_vertex_count(), Field::count);
     out_.varuint(triangles, Field::count);
+    // (The writer writes version 5: the period follows.)
+    std::vector<GridPoint> used;
+    for (const auto& t : mesh_.triangles)
+      for (int v : t) used.push_back(grid_[v]);
+    const GridPoint period = state_.mesh_periods ? dominant_period(used) : GridPoint{0, 0, 0};
+    for (int k = 0; k < 3; ++k) out_.varsint(period[k], Field::point);
+    repeats_ = PeriodPredictor(period);
+    if (repeats_.active()) ++state_.periodic_meshes;
     visited_.assign(triangles, false);
     number_.assign(mesh_.positions.size(), -1);
     size_t first_unvisited = 0;
@@ -272,7 +282,8 @@ class TraversalEncoder {
   void vertex(int v, const GridPoint& predicted) {
     if (number_[v] < 0) {
       symbol(new_vertex);
-      values_.write(out_, grid_[v], predicted, /*by_axis=*/true);  // the writer writes version 4
+      values_.write(out_, grid_[v], predicted, /*by_axis=*/true);  // the writer writes version 5
+      repeats_.add_vertex(count_, grid_[v]);
       number_[v] = count_++;
       last_ = grid_[v];
     } else {
@@ -294,6 +305,7 @@ class TraversalEncoder {
     visited_[t] = true;
     ++written_;
     for (int k = 0; k < 3; ++k) vertex(mesh_.triangles[t][k], last_);
+    repeats_.add_triangle(number_[mesh_.triangles[t][0]], number_[mesh_.triangles[t][1]], number_[mesh_.triangles[t][2]]);
     const int m = member(t, last_member_);
     std::array<BorderEdge, 3> edges;
     for (int k = 0; k < 3; ++k)
@@ -325,9 +337,11 @@ class TraversalEncoder {
                 : closes_after                ? closes_next
                                               : new_vertex;
     if (s == new_vertex)
-      vertex(v, parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex]));
+      vertex(v, repeats_.predict(grid_[gate.from], grid_[gate.to], grid_[gate.apex])
+                    .value_or(parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex])));
     else
       symbol(s);
+    repeats_.add_triangle(number_[gate.to], number_[gate.from], number_[v]);
     const int m = member(far / 3, gate.member);
     const BorderEdge left{gate.from, v, gate.to, to_apex, 0, 0, m}, right{v, gate.to, gate.from, apex_to, 0, 0, m};
     border_.advance(s, g, left, right, v);
@@ -336,6 +350,7 @@ class TraversalEncoder {
   ByteWriter& out_;
   const TriangleMesh& mesh_;
   const std::vector<int>* members_;
+  CodingState& state_;
   int last_member_ = 0;
   bool member_after_other_ = false;
   std::vector<GridPoint> grid_;
@@ -348,6 +363,7 @@ class TraversalEncoder {
   Border border_;
   VertexValues& values_;
   GridPoint& last_;
+  PeriodPredictor repeats_{{0, 0, 0}};
 };
 
 class TraversalDecoder {
@@ -356,11 +372,20 @@ class TraversalDecoder {
   TraversalDecoder(ByteReader& in, double q, CodingState& state, int member_count = 0,
                    std::vector<int>* members = nullptr)
       : in_(in), q_(q), values_(state.mesh_values), last_(state.last_mesh_vertex), member_count_(member_count),
-        members_(members), version_4_contexts_(state.version >= 4) {}
+        members_(members), version_4_contexts_(state.version >= 4), period_(state.version >= 5) {}
 
   TriangleMesh decode() {
     vertex_count_ = in_.count(4);
     const size_t triangles = in_.count(1);
+    if (period_) {
+      GridPoint period;
+      for (int k = 0; k < 3; ++k) {
+        const size_t at = in_.offset();
+        period[k] = in_.varsint(Field::point);
+        if (std::abs(static_cast<double>(period[k])) > 0x1p52) in_.fail("mesh period outside the grid's range", at);
+      }
+      repeats_ = PeriodPredictor(period);
+    }
     grid_.reserve(vertex_count_);
     mesh_.triangles.reserve(triangles);
     while (mesh_.triangles.size() < triangles) {
@@ -385,6 +410,7 @@ class TraversalDecoder {
       if (grid_.size() >= vertex_count_)
         in_.fail("more vertices than the " + std::to_string(vertex_count_) + " declared", at);
       const GridPoint p = values_.read(in_, predicted, version_4_contexts_);
+      repeats_.add_vertex(static_cast<int>(grid_.size()), p);
       grid_.push_back(p);
       last_ = p;
       return static_cast<int>(grid_.size() - 1);
@@ -427,6 +453,7 @@ class TraversalDecoder {
       v[k] = vertex(symbol(), at, last_);
     }
     const int m = triangle(v[0], v[1], v[2], in_.offset(), last_member_);
+    repeats_.add_triangle(v[0], v[1], v[2]);
     border_.start({BorderEdge{v[0], v[1], v[2], -1, 0, 0, m}, BorderEdge{v[1], v[2], v[0], -1, 0, 0, m},
                    BorderEdge{v[2], v[0], v[1], -1, 0, 0, m}});
   }
@@ -451,8 +478,11 @@ class TraversalDecoder {
     else if (uses_after)
       v = border_[gate.next].to;
     else
-      v = vertex(symbol, at, parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex]));
+      v = vertex(symbol, at,
+                 repeats_.predict(grid_[gate.from], grid_[gate.to], grid_[gate.apex])
+                     .value_or(parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex])));
     const int m = triangle(gate.to, gate.from, v, at, gate.member);
+    repeats_.add_triangle(gate.to, gate.from, v);
     const BorderEdge left{gate.from, v, gate.to, -1, 0, 0, m}, right{v, gate.to, gate.from, -1, 0, 0, m};
     border_.advance(symbol, g, left, right, v);
   }
@@ -481,6 +511,8 @@ class TraversalDecoder {
   int last_member_ = 0;
   bool member_after_other_ = false;
   bool version_4_contexts_;  // symbols by the one before, coordinates by axis
+  bool period_;              // version 5 on: the mesh's period, and vertices predicted by it
+  PeriodPredictor repeats_{{0, 0, 0}};
 };
 
 }  // namespace

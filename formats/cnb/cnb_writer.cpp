@@ -79,6 +79,7 @@ struct SceneEncoder {
     ByteWriter bytes;
     CodingState fresh;
     fresh.trim_extrapolation = state.trim_extrapolation;
+    fresh.mesh_periods = state.mesh_periods;
     geometry(bytes, s.geometry, geometry_kind(s.geometry), world_scale, fresh, false);
     return bytes.bytes();
   }
@@ -180,6 +181,7 @@ struct EncodingChoice {
   bool trim_extrapolation = false;  // faces may take the extrapolating trim predictor (else the previous point)
   bool piece_copies = true;         // mesh groups may code pieces as copies (cnb_mesh_copies.hpp)
   bool decimal_grid = false;        // the step is decimal_step of the largest the bound allows
+  bool mesh_periods = true;         // traversal-coded meshes may take a period (cnb_mesh_period.hpp)
 };
 
 std::string encode(const Scene& scene, const CnbOptions& options, const EncodingChoice& choice, CnbWriteReport& r) {
@@ -195,7 +197,9 @@ std::string encode(const Scene& scene, const CnbOptions& options, const Encoding
   SceneEncoder encoder{ByteWriter{}, options, q, r, {}, {}, 0, {}};
   encoder.state.trim_extrapolation = choice.trim_extrapolation;
   encoder.state.piece_copies = choice.piece_copies;
+  encoder.state.mesh_periods = choice.mesh_periods;
   encoder.node(scene.root, Eigen::Affine3d::Identity());
+  r.periodic_meshes = encoder.state.periodic_meshes;
   // The scene header goes first; it states the bound, known once every face's trim grid is chosen.
   ByteWriter header;
   header.text(scene.unit.name);
@@ -256,6 +260,11 @@ std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteRep
   if (best_report.piece_copies > 0) {
     other_choice = choice;
     other_choice.piece_copies = false;
+    try_other();
+  }
+  if (best_report.periodic_meshes > 0) {  // a period can mispredict more than it predicts
+    other_choice = choice;
+    other_choice.mesh_periods = false;
     try_other();
   }
   if (report) *report = best_report;

@@ -234,11 +234,12 @@ TEST(CnbDamage, RepeatsBeyondTheNumberBudget) {
                 std::to_string(budget) + " numbers (256 per payload byte and 1048576)");
 }
 
-// A traversal of one triangle: the vertex count, the triangle count, three new vertices (no axis listed,
-// each a difference from the previous).
+// A traversal of one triangle: the vertex count, the triangle count, no period, three new vertices (no axis
+// listed, each a difference from the previous).
 void one_triangle_traversal(cnb::ByteWriter& w) {
   w.varuint(3, cnb::Field::count);
   w.varuint(1, cnb::Field::count);
+  for (int k = 0; k < 3; ++k) w.varsint(0, cnb::Field::point);
   for (int v = 0; v < 3; ++v) {
     w.byte(0);  // symbol: a new vertex
     w.byte(0);  // no axis holds a listed value

@@ -149,14 +149,31 @@ TEST(CnbTraversalMesh, UnusedVerticesAreNotKeptAndNormalsKeepThePlainCoding) {
 
 // Version 3 coded mesh symbols in two contexts (after a new vertex, after anything else) and each vertex
 // coordinate's first byte in its field's one; version 4 by the symbol before and by axis. A version 3 file,
-// made from a version 4 payload with its contexts mapped back, still reads to the same mesh; read as
+// made from a version 5 payload with its contexts mapped back and the mesh's period (version 5; zero for a
+// torus whose points are jittered off its symmetries) left out, still reads to the same mesh; read as
 // version 4, the same bytes do not.
 TEST(CnbTraversalMesh, VersionThreeContextsStillRead) {
   CnbOptions options;
   options.max_deviation = 0.01;
   options.coder = CnbOptions::Coder::arithmetic;
-  const std::string v4 = write_cnb(scene_of(torus(24, 12)), options);
-  const CnbPayload payload = read_cnb_payload(v4, "torus.cnb");
+  TriangleMesh jittered = torus(24, 12);
+  std::mt19937 random(5);
+  for (auto& p : jittered.positions)
+    for (int k = 0; k < 3; ++k) p[k] += 0.1 * (static_cast<double>(random() % 1000) / 1000 - 0.5);
+  const std::string v4 = write_cnb(scene_of(jittered), options);
+  CnbPayload payload = read_cnb_payload(v4, "torus.cnb");
+  cnb::ByteWriter period;  // the period's context: the only NURBS point field of a mesh's file
+  period.varsint(0, cnb::Field::point);
+  std::string bytes;
+  std::vector<uint8_t> kept;
+  for (size_t i = 0; i < payload.bytes.size(); ++i)
+    if (payload.contexts[i] == period.contexts()[0])
+      ASSERT_EQ(payload.bytes[i], 0) << "the jittered torus has no period";
+    else
+      bytes.push_back(payload.bytes[i]), kept.push_back(payload.contexts[i]);
+  ASSERT_EQ(bytes.size() + 3, payload.bytes.size());
+  payload.bytes = bytes;
+  payload.contexts = kept;
   cnb::ByteWriter old_symbol;  // version 3's symbol contexts: after a new vertex, after anything else
   old_symbol.byte(0, cnb::Field::symbol, false);
   old_symbol.byte(0, cnb::Field::symbol, true);
@@ -171,7 +188,7 @@ TEST(CnbTraversalMesh, VersionThreeContextsStillRead) {
   const std::string coded = cnb::arithmetic_encode(payload.bytes, contexts, cnb::uniform_models());
   const size_t coded_at = crc_offset(v4) + 4;
   ASSERT_NE(coded, v4.substr(coded_at));  // the contexts change the coding
-  const std::string v3 = with_version(v4.substr(0, coded_at) + coded, 3);
+  const std::string v3 = with_version(with_payload_size(v4.substr(0, coded_at) + coded, bytes.size()), 3);
   const auto mesh_of = [](const std::string& file) {
     return std::get<TriangleMesh>(read_cnb(file, "torus.cnb").root.shapes.at(0).geometry);
   };
