@@ -6,6 +6,7 @@
 #include "core/triangle_mesh.hpp"
 #include "core/trimmed_surface.hpp"
 #include "formats/cnb/cnb_mesh_copies.hpp"
+#include "formats/cnb/cnb_mesh_period.hpp"
 #include "formats/cnb/cnb_numbers.hpp"
 #include "formats/cnb/cnb_stream.hpp"
 #include "formats/cnb/cnb_vertex_values.hpp"
@@ -25,6 +26,7 @@ struct CodingState {
   bool trim_extrapolation = true;  // writer only: whether faces may take the extrapolating trim predictor
   bool piece_copies = true;        // writer only: whether mesh groups may code pieces as copies
   bool mesh_periods = true;        // writer only: whether traversal-coded meshes may take a period
+  PeriodCache* periods = nullptr;  // writer only: periods found by earlier codings of the same meshes
   int periodic_meshes = 0;         // writer only: the traversal-coded meshes written with a period
   // The format version being read or written: from 4 on, mesh symbols and vertex coordinates take the
   // contexts by previous symbol and by axis (cnb_stream.hpp).

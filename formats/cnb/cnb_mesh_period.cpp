@@ -26,21 +26,26 @@ size_t PeriodPredictor::EdgeHash::operator()(const std::pair<int, int>& e) const
 GridPoint dominant_period(const std::vector<GridPoint>& points) {
   if (points.size() < 2) return {0, 0, 0};
   std::unordered_set<GridPoint, GridPointHash> all(points.begin(), points.end());
-  // Each axis's grid lines: the points' values along the axis, by their other two coordinates.
-  std::array<std::map<std::pair<int64_t, int64_t>, std::vector<int64_t>>, 3> lines;
-  for (const auto& p : all)
-    for (int k = 0; k < 3; ++k) lines[k][{p[(k + 1) % 3], p[(k + 2) % 3]}].push_back(p[k]);
+  // Each axis's grid lines: the distinct points as (the other two coordinates, the value on the axis),
+  // sorted, so that a line is a run.
+  std::array<std::vector<GridPoint>, 3> lines;
+  for (int k = 0; k < 3; ++k) {
+    for (const auto& p : all) lines[k].push_back({p[(k + 1) % 3], p[(k + 2) % 3], p[k]});
+    std::sort(lines[k].begin(), lines[k].end());
+  }
   std::map<GridPoint, int64_t> proposed;
   const size_t stride = std::max<size_t>(1, points.size() / sampled_points);
   for (size_t i = 0; i < points.size(); i += stride) {
     const GridPoint& p = points[i];
-    for (int k = 0; k < 3; ++k)
-      for (int64_t value : lines[k][{p[(k + 1) % 3], p[(k + 2) % 3]}])
-        if (value > p[k]) {
-          GridPoint move{0, 0, 0};
-          move[k] = value - p[k];
-          ++proposed[move];
-        }
+    for (int k = 0; k < 3; ++k) {
+      // The points after p on its line along axis k.
+      auto at = std::upper_bound(lines[k].begin(), lines[k].end(), GridPoint{p[(k + 1) % 3], p[(k + 2) % 3], p[k]});
+      for (; at != lines[k].end() && (*at)[0] == p[(k + 1) % 3] && (*at)[1] == p[(k + 2) % 3]; ++at) {
+        GridPoint move{0, 0, 0};
+        move[k] = (*at)[2] - p[k];
+        ++proposed[move];
+      }
+    }
   }
   std::vector<std::pair<int64_t, GridPoint>> ranked;
   for (const auto& [move, count] : proposed) ranked.push_back({count, move});
@@ -54,6 +59,17 @@ GridPoint dominant_period(const std::vector<GridPoint>& points) {
     if (mapped > best_mapped) best_mapped = mapped, best = move;
   }
   return best;
+}
+
+GridPoint PeriodCache::period_of(const std::vector<GridPoint>& points) {
+  uint64_t key = points.size();
+  for (const auto& p : points) key = key * 1099511628211ull ^ GridPointHash{}(p);
+  auto& same_key = found_[key];
+  for (const auto& [met, period] : same_key)
+    if (met == points) return period;
+  const GridPoint period = dominant_period(points);
+  same_key.push_back({points, period});
+  return period;
 }
 
 PeriodPredictor::PeriodPredictor(const GridPoint& period)

@@ -28,6 +28,16 @@ struct GridPointHash {
 // points, or a tenth of them.
 GridPoint dominant_period(const std::vector<GridPoint>& points);
 
+// dominant_period, remembered by the points it was found for: the writer codes a file several ways, and
+// each way meets the same meshes.
+class PeriodCache {
+ public:
+  GridPoint period_of(const std::vector<GridPoint>& points);
+
+ private:
+  std::unordered_map<uint64_t, std::vector<std::pair<std::vector<GridPoint>, GridPoint>>> found_;
+};
+
 class PeriodPredictor {
  public:
   explicit PeriodPredictor(const GridPoint& period);

@@ -231,7 +231,9 @@ class TraversalEncoder {
     std::vector<GridPoint> used;
     for (const auto& t : mesh_.triangles)
       for (int v : t) used.push_back(grid_[v]);
-    const GridPoint period = state_.mesh_periods ? dominant_period(used) : GridPoint{0, 0, 0};
+    const GridPoint period = !state_.mesh_periods ? GridPoint{0, 0, 0}
+                             : state_.periods     ? state_.periods->period_of(used)
+                                                  : dominant_period(used);
     for (int k = 0; k < 3; ++k) out_.varsint(period[k], Field::point);
     repeats_ = PeriodPredictor(period);
     if (repeats_.active()) ++state_.periodic_meshes;
@@ -254,14 +256,20 @@ class TraversalEncoder {
   // Half-edge h = 3t + k runs from corner k to corner k+1 of triangle t. It pairs with the opposite
   // half-edge when each direction of that edge occurs exactly once.
   void pair_half_edges() {
-    std::map<std::pair<int, int>, std::vector<int>> by_ends;
     const int n = static_cast<int>(3 * mesh_.triangles.size());
-    for (int h = 0; h < n; ++h) by_ends[{corner(h, 0), corner(h, 1)}].push_back(h);
+    std::vector<std::array<int, 3>> by_ends(n);  // (from, to, half-edge), sorted
+    for (int h = 0; h < n; ++h) by_ends[h] = {corner(h, 0), corner(h, 1), h};
+    std::sort(by_ends.begin(), by_ends.end());
+    // The half-edges running from a to b: a range of by_ends.
+    const auto running = [&](int a, int b) {
+      return std::equal_range(by_ends.begin(), by_ends.end(), std::array<int, 3>{a, b, 0},
+                              [](const auto& x, const auto& y) { return x[0] != y[0] ? x[0] < y[0] : x[1] < y[1]; });
+    };
     twin_.assign(n, -1);
     for (int h = 0; h < n; ++h) {
-      const auto& same = by_ends[{corner(h, 0), corner(h, 1)}];
-      const auto opposite = by_ends.find({corner(h, 1), corner(h, 0)});
-      if (same.size() == 1 && opposite != by_ends.end() && opposite->second.size() == 1) twin_[h] = opposite->second[0];
+      const auto same = running(corner(h, 0), corner(h, 1));
+      const auto opposite = running(corner(h, 1), corner(h, 0));
+      if (same.second - same.first == 1 && opposite.second - opposite.first == 1) twin_[h] = (*opposite.first)[2];
     }
   }
 

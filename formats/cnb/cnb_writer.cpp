@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 #include <unordered_set>
+#include <variant>
 
 #include "formats/cnb/cnb_colours.hpp"
 #include "formats/cnb/cnb_container.hpp"
@@ -23,8 +25,16 @@ uint8_t geometry_kind(const Geometry& g) {
   return mesh && traversal_codable(*mesh) ? traversal_mesh_kind : static_cast<uint8_t>(g.index());
 }
 
+// What one write_cnb finds once for all the ways it codes the file: the copies among each run of meshes on
+// each grid, and each mesh's period.
+struct MeshAnalyses {
+  std::map<std::pair<std::vector<const TriangleMesh*>, double>, GroupCopies> copies;
+  PeriodCache periods;
+};
+
 struct SceneEncoder {
   ByteWriter out;
+  MeshAnalyses& analyses;
   const CnbOptions& options;
   double q;
   CnbWriteReport& report;
@@ -80,6 +90,7 @@ struct SceneEncoder {
     CodingState fresh;
     fresh.trim_extrapolation = state.trim_extrapolation;
     fresh.mesh_periods = state.mesh_periods;
+    fresh.periods = state.periods;
     geometry(bytes, s.geometry, geometry_kind(s.geometry), world_scale, fresh, false);
     return bytes.bytes();
   }
@@ -115,7 +126,11 @@ struct SceneEncoder {
   GroupCopies group_copies(const std::vector<Shape>& shapes, size_t first, size_t end) const {
     std::vector<const TriangleMesh*> meshes;
     for (size_t i = first; i < end; ++i) meshes.push_back(&std::get<TriangleMesh>(shapes[i].geometry));
-    if (state.piece_copies) return find_group_copies(meshes, q);
+    if (state.piece_copies) {
+      const auto [found, is_new] = analyses.copies.try_emplace({meshes, q});
+      if (is_new) found->second = find_group_copies(meshes, q);
+      return found->second;
+    }
     GroupCopies none;
     for (const TriangleMesh* mesh : meshes) none.kept.push_back(*mesh);
     return none;
@@ -176,6 +191,14 @@ struct SceneEncoder {
   ColourCache colours;  // met so far in the file (version 4)
 };
 
+bool holds_trimmed_surface(const SceneNode& node) {
+  for (const auto& s : node.shapes)
+    if (std::holds_alternative<TrimmedSurface>(s.geometry)) return true;
+  for (const auto& child : node.children)
+    if (holds_trimmed_surface(child)) return true;
+  return false;
+}
+
 // What the writer tries both ways and keeps the smaller file of.
 struct EncodingChoice {
   bool trim_extrapolation = false;  // faces may take the extrapolating trim predictor (else the previous point)
@@ -184,7 +207,8 @@ struct EncodingChoice {
   bool mesh_periods = true;         // traversal-coded meshes may take a period (cnb_mesh_period.hpp)
 };
 
-std::string encode(const Scene& scene, const CnbOptions& options, const EncodingChoice& choice, CnbWriteReport& r) {
+std::string encode(const Scene& scene, const CnbOptions& options, const EncodingChoice& choice,
+                   MeshAnalyses& analyses, CnbWriteReport& r) {
   r = CnbWriteReport{};
   // The step as the float32 nearest the chosen one and not above the largest: 4 bytes in the header, and
   // the same grid to 1e-7.
@@ -194,7 +218,8 @@ std::string encode(const Scene& scene, const CnbOptions& options, const Encoding
   const double q = step;
   r.point_step = q;
   r.point_bound = q * std::sqrt(3.0) / 2.0 * largest_world_scale(scene);
-  SceneEncoder encoder{ByteWriter{}, options, q, r, {}, {}, 0, {}};
+  SceneEncoder encoder{ByteWriter{}, analyses, options, q, r, {}, {}, 0, {}};
+  encoder.state.periods = &analyses.periods;
   encoder.state.trim_extrapolation = choice.trim_extrapolation;
   encoder.state.piece_copies = choice.piece_copies;
   encoder.state.mesh_periods = choice.mesh_periods;
@@ -240,10 +265,11 @@ std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteRep
   // Copies of pins drawn a decimal pitch apart need a decimal grid (decimal_step) to stay copies after
   // rounding, which a finer grid makes dearer elsewhere: tried where the file holds a mesh.
   EncodingChoice choice, other_choice;
+  MeshAnalyses analyses;
   CnbWriteReport best_report, other_report;
-  std::string best = encode(scene, options, choice, best_report), other;
+  std::string best = encode(scene, options, choice, analyses, best_report), other;
   const auto try_other = [&] {
-    other = encode(scene, options, other_choice, other_report);
+    other = encode(scene, options, other_choice, analyses, other_report);
     if (other.size() < best.size()) {
       best = std::move(other);
       best_report = other_report;
@@ -251,7 +277,7 @@ std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteRep
     }
   };
   other_choice.trim_extrapolation = true;
-  try_other();
+  if (holds_trimmed_surface(scene.root)) try_other();
   if (best_report.mesh_bound > 0) {
     other_choice = choice;
     other_choice.decimal_grid = true;
