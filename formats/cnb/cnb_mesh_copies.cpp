@@ -8,7 +8,7 @@
 #include <string>
 #include <tuple>
 
-#include "formats/cnb/cnb_numbers.hpp"
+#include "core/union_find.hpp"
 
 namespace cadnurbs::cnb {
 
@@ -33,22 +33,16 @@ struct Piece {
   }
 };
 
-int root(std::vector<int>& parent, int v) {
-  while (parent[v] != v) v = parent[v] = parent[parent[v]];
-  return v;
-}
-
 // The pieces of a mesh in the order of their first triangles.
 std::vector<Piece> pieces_of(const TriangleMesh& mesh, const std::vector<GridPoint>& grid) {
-  std::vector<int> parent(mesh.positions.size());
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind joined(mesh.positions.size());
   for (const auto& t : mesh.triangles)
-    for (int k = 1; k < 3; ++k) parent[root(parent, t[k])] = root(parent, t[0]);
+    for (int k = 1; k < 3; ++k) joined.unite(t[0], t[k]);
   std::map<int, size_t> piece_of_root;
   std::vector<Piece> pieces;
   std::vector<int> local(mesh.positions.size(), -1);
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto [found, added] = piece_of_root.emplace(root(parent, mesh.triangles[t][0]), pieces.size());
+    const auto [found, added] = piece_of_root.emplace(joined.find(mesh.triangles[t][0]), pieces.size());
     if (added) pieces.emplace_back();
     Piece& piece = pieces[found->second];
     std::array<int, 3> corners;
@@ -82,6 +76,11 @@ GridPoint lowest_corner(const std::vector<GridPoint>& points) {
   for (const auto& p : points)
     for (int k = 0; k < 3; ++k) low[k] = std::min(low[k], p[k]);
   return low;
+}
+
+// Triangle (a, b, c) as a turn leaves it facing: reversed by a mirror, so that it still faces outwards.
+std::array<int, 3> facing(int a, int b, int c, bool mirrors) {
+  return mirrors ? std::array<int, 3>{a, c, b} : std::array<int, 3>{a, b, c};
 }
 
 // The triangle as a cycle starting at its smallest index, so that rotations compare equal.
@@ -171,8 +170,7 @@ std::optional<PieceCopy> piece_map(const Piece& source, const Piece& target) {
     const bool mirrors = turn_mirrors(turn);
     std::vector<std::array<int, 3>> images;
     for (const auto& t : source.triangles)
-      images.push_back(mirrors ? std::array<int, 3>{image[t[0]], image[t[2]], image[t[1]]}
-                               : std::array<int, 3>{image[t[0]], image[t[1]], image[t[2]]});
+      images.push_back(facing(image[t[0]], image[t[1]], image[t[2]], mirrors));
     std::set<std::array<int, 3>> met;
     bool same_triangles = true;
     for (const auto& t : images) {
@@ -201,16 +199,10 @@ std::array<int64_t, 5> signature(const Piece& piece) {
           sides[1], sides[2]};
 }
 
-std::vector<GridPoint> grid_of(const TriangleMesh& mesh, double q) {
-  std::vector<GridPoint> grid;
-  grid.reserve(mesh.positions.size());
-  for (const auto& p : mesh.positions) grid.push_back({on_grid(p.x(), q), on_grid(p.y(), q), on_grid(p.z(), q)});
-  return grid;
-}
-
-// The prediction of the k-th move of a run from the moves before it: the last extended by its step, the
-// last alone, or none.
-GridPoint predicted_move(const std::vector<GridPoint>& moves, size_t k) {
+// The prediction of a run's next move from its moves so far: the last extended by its step, the last
+// alone, or none.
+GridPoint predicted_move(const std::vector<GridPoint>& moves) {
+  const size_t k = moves.size();
   if (k >= 2) {
     GridPoint p;
     for (int a = 0; a < 3; ++a) p[a] = 2 * moves[k - 1][a] - moves[k - 2][a];
@@ -238,8 +230,7 @@ void append_copy(ByteReader& in, size_t at, TriangleMesh& mesh, const Piece& pie
   }
   const bool mirrors = turn_mirrors(c.turn);
   for (const auto& t : piece.triangles)
-    mesh.triangles.push_back(mirrors ? std::array<int, 3>{first + t[0], first + t[2], first + t[1]}
-                                     : std::array<int, 3>{first + t[0], first + t[1], first + t[2]});
+    mesh.triangles.push_back(facing(first + t[0], first + t[1], first + t[2], mirrors));
 }
 
 }  // namespace
@@ -261,7 +252,7 @@ GroupCopies find_group_copies(const std::vector<const TriangleMesh*>& meshes, do
   GroupCopies found;
   for (size_t m = 0; m < meshes.size(); ++m) {
     const TriangleMesh& mesh = *meshes[m];
-    const std::vector<Piece> pieces = pieces_of(mesh, grid_of(mesh, q));
+    const std::vector<Piece> pieces = pieces_of(mesh, grid_points(mesh, q));
     std::map<std::array<int64_t, 5>, std::vector<size_t>> originals_by_signature;
     std::vector<size_t> originals;
     std::vector<std::pair<size_t, PieceCopy>> copies;  // original's piece, copy
@@ -280,7 +271,7 @@ GroupCopies find_group_copies(const std::vector<const TriangleMesh*>& meshes, do
       }
     }
     bool ties = false;
-    const std::vector<size_t> order = ordered(pieces, originals, ties);
+    const std::vector<size_t> order = copies.empty() ? originals : ordered(pieces, originals, ties);
     TriangleMesh kept{mesh.positions, {}, {}};
     if (ties || copies.empty()) {
       kept.triangles = mesh.triangles;
@@ -326,7 +317,7 @@ void write_piece_copies(ByteWriter& out, const std::vector<PieceCopy>& copies) {
     out.varuint(end - first - 1, Field::count);
     std::vector<GridPoint> moves;
     for (size_t i = first; i < end; ++i) {
-      const GridPoint predicted = predicted_move(moves, moves.size());
+      const GridPoint predicted = predicted_move(moves);
       for (int k = 0; k < 3; ++k) out.varsint(sorted[i].move[k] - predicted[k], Field::point);
       moves.push_back(sorted[i].move);
     }
@@ -338,7 +329,7 @@ void read_piece_copies(ByteReader& in, std::vector<TriangleMesh>& meshes, double
   std::vector<std::vector<Piece>> pieces(meshes.size());
   std::vector<std::vector<size_t>> order(meshes.size());
   for (size_t m = 0; m < meshes.size(); ++m) {
-    pieces[m] = pieces_of(meshes[m], grid_of(meshes[m], q));
+    pieces[m] = pieces_of(meshes[m], grid_points(meshes[m], q));
     std::vector<size_t> all(pieces[m].size());
     std::iota(all.begin(), all.end(), 0);
     bool ties = false;
@@ -368,7 +359,7 @@ void read_piece_copies(ByteReader& in, std::vector<TriangleMesh>& meshes, double
     std::vector<GridPoint> moves;
     for (size_t i = 0; i < n; ++i) {
       const size_t move_at = in.offset();
-      const GridPoint predicted = predicted_move(moves, moves.size());
+      const GridPoint predicted = predicted_move(moves);
       for (int k = 0; k < 3; ++k) {
         const double move = static_cast<double>(predicted[k]) + static_cast<double>(in.varsint(Field::point));
         if (std::abs(move) > 0x1p52) in.fail("copy move outside the grid's range", move_at);

@@ -19,8 +19,8 @@ size_t GridPointHash::operator()(const GridPoint& p) const {
 }
 
 size_t PeriodPredictor::EdgeHash::operator()(const std::pair<int, int>& e) const {
-  return static_cast<size_t>((static_cast<uint64_t>(static_cast<uint32_t>(e.first)) << 32 | static_cast<uint32_t>(e.second)) *
-                             0x9E3779B97F4A7C15ull);
+  const uint64_t both = static_cast<uint64_t>(static_cast<uint32_t>(e.first)) << 32 | static_cast<uint32_t>(e.second);
+  return static_cast<size_t>(both * 0x9E3779B97F4A7C15ull);
 }
 
 GridPoint dominant_period(const std::vector<GridPoint>& points) {
@@ -49,7 +49,8 @@ GridPoint dominant_period(const std::vector<GridPoint>& points) {
   }
   std::vector<std::pair<int64_t, GridPoint>> ranked;
   for (const auto& [move, count] : proposed) ranked.push_back({count, move});
-  std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
+  std::sort(ranked.begin(), ranked.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
   GridPoint best{0, 0, 0};
   int64_t best_mapped = std::max<int64_t>(fewest_mapped, static_cast<int64_t>(all.size() / 10)) - 1;
   for (size_t r = 0; r < ranked.size() && r < moves_tried; ++r) {

@@ -115,7 +115,8 @@ struct SceneDecoder {
       s.name = in.text();
       if (flags & has_colour_flag) s.colour = colour();
     }
-    std::vector<TriangleMesh> meshes = read_mesh_group(in, static_cast<int>(count), q, state, with_copies, number_budget - numbers);
+    std::vector<TriangleMesh> meshes =
+        read_mesh_group(in, static_cast<int>(count), q, state, with_copies, number_budget - numbers);
     for (size_t i = 0; i < count; ++i) {
       shapes[i].geometry = std::move(meshes[i]);
       accept(shapes[i], path, start);

@@ -217,9 +217,7 @@ class TraversalEncoder {
   // `members` (may be null): each triangle's mesh in a group, coded after the triangle.
   TraversalEncoder(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state,
                    const std::vector<int>* members)
-      : out_(out), mesh_(mesh), members_(members), state_(state), values_(state.mesh_values), last_(state.last_mesh_vertex) {
-    grid_.reserve(mesh.positions.size());
-    for (const auto& p : mesh.positions) grid_.push_back({on_grid(p.x(), q), on_grid(p.y(), q), on_grid(p.z(), q)});
+      : out_(out), mesh_(mesh), members_(members), state_(state), grid_(grid_points(mesh, q)) {
     pair_half_edges();
   }
 
@@ -290,10 +288,10 @@ class TraversalEncoder {
   void vertex(int v, const GridPoint& predicted) {
     if (number_[v] < 0) {
       symbol(new_vertex);
-      values_.write(out_, grid_[v], predicted, /*by_axis=*/true);  // the writer writes version 5
+      state_.mesh_values.write(out_, grid_[v], predicted, /*by_axis=*/true);  // the writer writes version 5
       repeats_.add_vertex(count_, grid_[v]);
       number_[v] = count_++;
-      last_ = grid_[v];
+      state_.last_mesh_vertex = grid_[v];
     } else {
       symbol(old_vertex);
       out_.varuint(static_cast<uint64_t>(count_ - 1 - number_[v]), Field::index);
@@ -312,8 +310,9 @@ class TraversalEncoder {
   void start(int t) {
     visited_[t] = true;
     ++written_;
-    for (int k = 0; k < 3; ++k) vertex(mesh_.triangles[t][k], last_);
-    repeats_.add_triangle(number_[mesh_.triangles[t][0]], number_[mesh_.triangles[t][1]], number_[mesh_.triangles[t][2]]);
+    for (int k = 0; k < 3; ++k) vertex(mesh_.triangles[t][k], state_.last_mesh_vertex);
+    const auto& corners = mesh_.triangles[t];
+    repeats_.add_triangle(number_[corners[0]], number_[corners[1]], number_[corners[2]]);
     const int m = member(t, last_member_);
     std::array<BorderEdge, 3> edges;
     for (int k = 0; k < 3; ++k)
@@ -369,8 +368,6 @@ class TraversalEncoder {
   size_t written_ = 0;
   uint8_t previous_ = new_vertex;
   Border border_;
-  VertexValues& values_;
-  GridPoint& last_;
   PeriodPredictor repeats_{{0, 0, 0}};
 };
 

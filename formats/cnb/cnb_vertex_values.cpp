@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "formats/cnb/cnb_numbers.hpp"
+
 namespace cadnurbs::cnb {
 
 namespace {
@@ -12,6 +14,13 @@ int64_t place_of(const std::vector<int64_t>& sorted, int64_t value) {
   return std::lower_bound(sorted.begin(), sorted.end(), value) - sorted.begin();
 }
 }  // namespace
+
+std::vector<GridPoint> grid_points(const TriangleMesh& mesh, double q) {
+  std::vector<GridPoint> grid;
+  grid.reserve(mesh.positions.size());
+  for (const auto& p : mesh.positions) grid.push_back({on_grid(p.x(), q), on_grid(p.y(), q), on_grid(p.z(), q)});
+  return grid;
+}
 
 void VertexValues::remember(int axis, int64_t value, int64_t place) {
   auto& sorted = sorted_[axis];

@@ -12,11 +12,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/triangle_mesh.hpp"
 #include "formats/cnb/cnb_stream.hpp"
 
 namespace cadnurbs::cnb {
 
 using GridPoint = std::array<int64_t, 3>;
+
+// Each vertex of `mesh` rounded to the grid q (on_grid per coordinate).
+std::vector<GridPoint> grid_points(const TriangleMesh& mesh, double q);
 
 constexpr size_t value_table_limit = 4096;
 

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
-#include <variant>
 
 #include "formats/cnb/cnb_colours.hpp"
 #include "formats/cnb/cnb_container.hpp"
@@ -26,9 +26,9 @@ uint8_t geometry_kind(const Geometry& g) {
 }
 
 // What one write_cnb finds once for all the ways it codes the file: the copies among each run of meshes on
-// each grid, and each mesh's period.
+// each grid (or none, where copies are off), and each mesh's period.
 struct MeshAnalyses {
-  std::map<std::pair<std::vector<const TriangleMesh*>, double>, GroupCopies> copies;
+  std::map<std::tuple<std::vector<const TriangleMesh*>, double, bool>, GroupCopies> copies;
   PeriodCache periods;
 };
 
@@ -123,17 +123,14 @@ struct SceneEncoder {
 
   // The shapes from `first` to `end` (traversal-coded meshes) with the copies among their pieces, if the
   // writer codes copies.
-  GroupCopies group_copies(const std::vector<Shape>& shapes, size_t first, size_t end) const {
+  const GroupCopies& group_copies(const std::vector<Shape>& shapes, size_t first, size_t end) const {
     std::vector<const TriangleMesh*> meshes;
     for (size_t i = first; i < end; ++i) meshes.push_back(&std::get<TriangleMesh>(shapes[i].geometry));
-    if (state.piece_copies) {
-      const auto [found, is_new] = analyses.copies.try_emplace({meshes, q});
-      if (is_new) found->second = find_group_copies(meshes, q);
-      return found->second;
-    }
-    GroupCopies none;
-    for (const TriangleMesh* mesh : meshes) none.kept.push_back(*mesh);
-    return none;
+    const auto [found, is_new] = analyses.copies.try_emplace({meshes, q, state.piece_copies});
+    if (is_new && state.piece_copies) found->second = find_group_copies(meshes, q);
+    if (is_new && !state.piece_copies)
+      for (const TriangleMesh* mesh : meshes) found->second.kept.push_back(*mesh);
+    return found->second;
   }
 
   // A group of the shapes from `first` to `end`: two or more, or one with copies.
@@ -175,9 +172,9 @@ struct SceneEncoder {
     for (const auto& s : n.shapes) canonicals.push_back(canonical(s, scale));
     for (size_t i = 0; i < n.shapes.size();) {
       const size_t end = group_end(n.shapes, canonicals, i);
-      const GroupCopies group = end > i ? group_copies(n.shapes, i, end) : GroupCopies{};
-      if (end - i >= 2 || !group.copies.empty()) {
-        mesh_group(n.shapes, canonicals, i, end, group);
+      const GroupCopies* group = end > i ? &group_copies(n.shapes, i, end) : nullptr;
+      if (end - i >= 2 || (group && !group->copies.empty())) {
+        mesh_group(n.shapes, canonicals, i, end, *group);
         i = end;
       } else {
         shape(n.shapes[i], canonicals[i], scale);
@@ -190,14 +187,6 @@ struct SceneEncoder {
 
   ColourCache colours;  // met so far in the file (version 4)
 };
-
-bool holds_trimmed_surface(const SceneNode& node) {
-  for (const auto& s : node.shapes)
-    if (std::holds_alternative<TrimmedSurface>(s.geometry)) return true;
-  for (const auto& child : node.children)
-    if (holds_trimmed_surface(child)) return true;
-  return false;
-}
 
 // What the writer tries both ways and keeps the smaller file of.
 struct EncodingChoice {
@@ -277,7 +266,7 @@ std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteRep
     }
   };
   other_choice.trim_extrapolation = true;
-  if (holds_trimmed_surface(scene.root)) try_other();
+  if (count_entities(scene).surfaces > 0) try_other();
   if (best_report.mesh_bound > 0) {
     other_choice = choice;
     other_choice.decimal_grid = true;

@@ -171,9 +171,7 @@ TEST(CnbMeshCopies, AFlatFaceCutAlongTheOtherDiagonalIsStillACopy) {
   ASSERT_EQ(decoded.triangles.size(), pads.triangles.size());
   EXPECT_EQ(decoded.positions.size(), pads.positions.size());
   // The copy takes its source's diagonal: the same vertices and surface, not the same triangles.
-  TriangleMesh on_grid = pads;
-  for (auto& p : on_grid.positions)
-    for (int k = 0; k < 3; ++k) p[k] = std::round(p[k] / w.report.point_step) * w.report.point_step;
+  const TriangleMesh on_grid = mesh_on_grid(pads, w.report.point_step);
   EXPECT_NEAR(mesh_area(decoded), mesh_area(on_grid), 1e-12);
   EXPECT_NE(oriented_triangle_keys(decoded.positions, decoded.triangles),
             oriented_triangle_keys(on_grid.positions, on_grid.triangles));

@@ -26,6 +26,7 @@
 #include "formats/draco/draco_mesh_codec.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/step/step_reader.hpp"
+#include "tests/cnb/expect_same_mesh_on_grid.hpp"
 #include "tests/cnb/cnb_file_header.hpp"
 
 namespace cadnurbs {
@@ -58,14 +59,12 @@ Decoded round_trip(const TriangleMesh& mesh, double deviation) {
 
 // The decoded triangles are the input's, with every corner on the grid where rounding puts it.
 void expect_same_triangles(const TriangleMesh& mesh, const Decoded& d) {
-  std::vector<Eigen::Vector3d> on_grid;
-  for (const auto& p : mesh.positions)
-    on_grid.emplace_back(std::llround(p.x() / d.step) * d.step, std::llround(p.y() / d.step) * d.step,
-                         std::llround(p.z() / d.step) * d.step);
+  const TriangleMesh on_grid = mesh_on_grid(mesh, d.step);
   ASSERT_EQ(d.mesh.triangles.size(), mesh.triangles.size());
-  EXPECT_EQ(oriented_triangle_keys(d.mesh.positions, d.mesh.triangles), oriented_triangle_keys(on_grid, mesh.triangles));
-  for (size_t i = 0; i < on_grid.size(); ++i)
-    EXPECT_LE((on_grid[i] - mesh.positions[i]).norm(), d.step * std::sqrt(3.0) / 2 * (1 + 1e-12));
+  EXPECT_EQ(oriented_triangle_keys(d.mesh.positions, d.mesh.triangles),
+            oriented_triangle_keys(on_grid.positions, on_grid.triangles));
+  for (size_t i = 0; i < on_grid.positions.size(); ++i)
+    EXPECT_LE((on_grid.positions[i] - mesh.positions[i]).norm(), d.step * std::sqrt(3.0) / 2 * (1 + 1e-12));
 }
 
 // A torus of n x m quads, two triangles each: closed, genus 1.
@@ -265,9 +264,7 @@ TEST(CnbTraversalMesh, SmallerThanDracoOnACorpusPartsCertifiedMesh) {
   // Pieces coded as copies decode with their source's triangles, which may cut a flat face along another
   // diagonal: the same vertices, the same surface.
   EXPECT_GT(report.piece_copies, 0);
-  TriangleMesh on_grid = mesh;
-  for (auto& p : on_grid.positions)
-    for (int k = 0; k < 3; ++k) p[k] = std::llround(p[k] / report.point_step) * report.point_step;
+  const TriangleMesh on_grid = mesh_on_grid(mesh, report.point_step);
   ASSERT_EQ(decoded.mesh.triangles.size(), mesh.triangles.size());
   const auto sorted = [](std::vector<Eigen::Vector3d> points) {
     std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) {

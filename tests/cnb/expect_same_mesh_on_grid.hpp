@@ -10,13 +10,18 @@
 
 namespace cadnurbs {
 
+// `mesh` with every vertex rounded to the grid `step`, as the writer rounds it.
+inline TriangleMesh mesh_on_grid(TriangleMesh mesh, double step) {
+  for (auto& p : mesh.positions)
+    for (int k = 0; k < 3; ++k) p[k] = static_cast<double>(std::llround(p[k] / step)) * step;
+  return mesh;
+}
+
 inline void expect_same_mesh_on_grid(const TriangleMesh& mesh, const TriangleMesh& decoded, double step) {
-  std::vector<Eigen::Vector3d> on_grid;
-  for (const auto& p : mesh.positions)
-    on_grid.emplace_back(std::llround(p.x() / step) * step, std::llround(p.y() / step) * step,
-                         std::llround(p.z() / step) * step);
+  const TriangleMesh on_grid = mesh_on_grid(mesh, step);
   ASSERT_EQ(decoded.triangles.size(), mesh.triangles.size());
-  EXPECT_EQ(oriented_triangle_keys(decoded.positions, decoded.triangles), oriented_triangle_keys(on_grid, mesh.triangles));
+  EXPECT_EQ(oriented_triangle_keys(decoded.positions, decoded.triangles),
+            oriented_triangle_keys(on_grid.positions, on_grid.triangles));
   EXPECT_EQ(decoded.positions.size(), mesh.positions.size());
 }
 
