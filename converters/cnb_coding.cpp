@@ -1,6 +1,7 @@
 #include "converters/cnb_coding.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -53,7 +54,8 @@ double scale_keeping_sewn(const Scene& scene, const CnbOptions& options) {
   const double safe = std::min(0.125, 0.5 * tolerance.first / d);
   SewingReport own;
   sew_faces(scene, tolerance, &own);
-  for (double scale : {1.0, 0.5, 0.25, 0.125}) {
+  for (int half_octaves = 0; half_octaves <= 12; ++half_octaves) {
+    const double scale = std::exp2(-0.5 * half_octaves);
     if (scale <= safe) break;
     try {
       CnbOptions trial = options;

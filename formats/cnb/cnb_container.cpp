@@ -168,7 +168,7 @@ std::pair<size_t, size_t> version_1_header(const std::string& file, const std::s
   return {h, size};
 }
 
-// The same for versions 2 to 5: the payload size as a varuint at byte 6, then the CRC of all before it and of
+// The same for versions 2 to 6: the payload size as a varuint at byte 6, then the CRC of all before it and of
 // the coded bytes, which run to the end of the file.
 std::pair<size_t, size_t> version_2_header(const std::string& file, const std::string& name) {
   uint64_t size = 0;
@@ -197,8 +197,9 @@ OpenedPayload open_payload(const std::string& file, const std::string& name) {
   }
   if (file.size() < 6) refuse(name, file.size(), "truncated: the file ends inside the header");
   const uint8_t version = static_cast<uint8_t>(file[4]);
-  if (version < 1 || version > 5)
-    refuse(name, 4, "version " + std::to_string(version) + " is not one this reader knows (1, 2, 3, 4, 5)");
+  if (version < 1 || version > format_version)
+    refuse(name, 4, "version " + std::to_string(version) + " is not one this reader knows (1 to " +
+                        std::to_string(format_version) + ")");
   const auto [start, size] = version == 1 ? version_1_header(file, name) : version_2_header(file, name);
   const size_t coded = file.size() - start;
   const uint8_t id = static_cast<uint8_t>(file[5]);

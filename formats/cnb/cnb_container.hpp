@@ -9,7 +9,7 @@
 
 namespace cadnurbs::cnb {
 
-// Version 4 (written): magic, version, coder, the payload size as a varuint, the CRC-32, the coded bytes.
+// Versions 4 to 6 (6 written; docs/cnb.md says what each adds to the payload): magic, version, coder, the payload size as a varuint, the CRC-32, the coded bytes.
 // Version 3 (still read): the same, without coder 3 (the coder prior) and without the contexts of mesh
 // symbols by the symbol before and of vertex coordinates by axis. Version 2 (still read): the same header;
 // its scene header's grid step and bound are raw float64 where version 3 has exact numbers. Version 1

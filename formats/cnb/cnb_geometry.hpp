@@ -8,6 +8,7 @@
 #include "formats/cnb/cnb_mesh_copies.hpp"
 #include "formats/cnb/cnb_mesh_period.hpp"
 #include "formats/cnb/cnb_numbers.hpp"
+#include "formats/cnb/cnb_quantisation.hpp"
 #include "formats/cnb/cnb_stream.hpp"
 #include "formats/cnb/cnb_vertex_values.hpp"
 
@@ -36,8 +37,9 @@ struct CodingState {
 // A surface's net on the grid of step q, predicted along rows (each point from the one before it, u
 // fastest) or across the net (parallelogram: P[i-1,j] + P[i,j-1] - P[i-1,j-1]), whichever leaves the
 // smaller residuals. Returns true when the parallelogram was taken.
-// Weights exact, or with `weight_log_step` > 0 quantised (write_weights' mode 2).
-bool write_surface(ByteWriter& out, const NurbsSurface& surface, double q, CodingState& state, double weight_log_step = 0);
+// Weights as `weights` says (cnb_quantisation.hpp: exact, rounded or factored).
+bool write_surface(ByteWriter& out, const NurbsSurface& surface, double q, CodingState& state,
+                   const WeightCoding& weights = {});
 NurbsSurface read_surface(ByteReader& in, double q, CodingState& state);
 
 // Trimming loops on the grid 2^exponent in (u,v), predicted from the previous point along the loop (or,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -194,6 +195,14 @@ void WeightCache::add(double value) {
   if (recent.size() > capacity) recent.pop_back();
 }
 
+namespace {
+// Mode 1 after its mode byte: the table of distinct values, then (for two or more) an index per point.
+void write_weight_table(ByteWriter& out, const std::vector<double>& weights, WeightCache& cache);
+std::vector<double> read_weight_table(ByteReader& in, size_t point_count, WeightCache& cache);
+// Modes 0 to 2, the mode byte (at `mode_at`) read.
+std::vector<double> read_weights_of_mode(ByteReader& in, uint8_t mode, size_t mode_at, size_t point_count, WeightCache& cache);
+}  // namespace
+
 void write_weights(ByteWriter& out, const std::vector<double>& weights, WeightCache& cache, double log_step) {
   if (weights.empty()) { out.byte(0, Field::weight); return; }
   if (log_step > 0) {
@@ -208,6 +217,11 @@ void write_weights(ByteWriter& out, const std::vector<double>& weights, WeightCa
     return;
   }
   out.byte(1, Field::weight);
+  write_weight_table(out, weights, cache);
+}
+
+namespace {
+void write_weight_table(ByteWriter& out, const std::vector<double>& weights, WeightCache& cache) {
   std::vector<double> table;
   std::vector<uint64_t> index;
   index.reserve(weights.size());
@@ -233,10 +247,16 @@ void write_weights(ByteWriter& out, const std::vector<double>& weights, WeightCa
   if (table.size() > 1)
     for (uint64_t i : index) out.varuint(i, Field::weight);
 }
+}  // namespace
 
 std::vector<double> read_weights(ByteReader& in, size_t point_count, WeightCache& cache) {
   const size_t mode_at = in.offset();
   const uint8_t mode = in.byte(Field::weight);
+  return read_weights_of_mode(in, mode, mode_at, point_count, cache);
+}
+
+namespace {
+std::vector<double> read_weights_of_mode(ByteReader& in, uint8_t mode, size_t mode_at, size_t point_count, WeightCache& cache) {
   if (mode == 0) return {};
   if (mode == 2) {
     const size_t step_at = in.offset();
@@ -257,6 +277,12 @@ std::vector<double> read_weights(ByteReader& in, size_t point_count, WeightCache
     return weights;
   }
   if (mode != 1) in.fail("unknown weight mode " + std::to_string(mode), mode_at);
+  return read_weight_table(in, point_count, cache);
+}
+}  // namespace
+
+namespace {
+std::vector<double> read_weight_table(ByteReader& in, size_t point_count, WeightCache& cache) {
   const size_t start = in.offset();
   const size_t t = in.count(1);
   if (t == 0 || t > point_count) in.fail(std::to_string(t) + " distinct weights for " + std::to_string(point_count) + " points", start);
@@ -285,5 +311,56 @@ std::vector<double> read_weights(ByteReader& in, size_t point_count, WeightCache
   }
   return weights;
 }
+}  // namespace
+
+std::optional<WeightFactors> weight_factors(const std::vector<double>& weights, int u_count, int v_count,
+                                            double largest_relative_error) {
+  const size_t n = static_cast<size_t>(u_count) * static_cast<size_t>(v_count);
+  if (u_count < 1 || v_count < 1 || weights.size() != n || size_t(u_count) + size_t(v_count) >= n ||
+      distinct_count(weights) < 2)
+    return std::nullopt;
+  const size_t largest = static_cast<size_t>(std::max_element(weights.begin(), weights.end()) - weights.begin());
+  const int i0 = static_cast<int>(largest % u_count), j0 = static_cast<int>(largest / u_count);
+  WeightFactors f;
+  for (int i = 0; i < u_count; ++i) f.u.push_back(weights[i + static_cast<size_t>(j0) * u_count]);
+  const double corner = weights[largest];
+  for (int j = 0; j < v_count; ++j) {
+    const double w = weights[i0 + static_cast<size_t>(j) * u_count];
+    f.v.push_back(w == corner ? 1.0 : w / corner);
+  }
+  for (int j = 0; j < v_count; ++j)
+    for (int i = 0; i < u_count; ++i) {
+      const double w = weights[i + static_cast<size_t>(j) * u_count];
+      if (!(w > 0) || !std::isfinite(w)) return std::nullopt;
+      f.relative_error = std::max(f.relative_error, std::abs(f.u[i] * f.v[j] - w) / w);
+    }
+  if (!(f.relative_error <= largest_relative_error)) return std::nullopt;
+  return f;
+}
+
+void write_weight_factors(ByteWriter& out, const WeightFactors& factors, WeightCache& cache) {
+  out.byte(3, Field::weight);
+  write_weight_table(out, factors.u, cache);
+  write_weight_table(out, factors.v, cache);
+}
+
+std::vector<double> read_surface_weights(ByteReader& in, size_t u_count, size_t v_count, WeightCache& cache,
+                                         bool factors_allowed) {
+  const size_t mode_at = in.offset();
+  const uint8_t mode = in.byte(Field::weight);
+  if (mode != 3 || !factors_allowed) return read_weights_of_mode(in, mode, mode_at, u_count * v_count, cache);
+  const std::vector<double> u = read_weight_table(in, u_count, cache);
+  const std::vector<double> v = read_weight_table(in, v_count, cache);
+  std::vector<double> weights;
+  weights.reserve(u_count * v_count);
+  for (size_t j = 0; j < v_count; ++j)
+    for (size_t i = 0; i < u_count; ++i) {
+      const double w = u[i] * v[j];
+      if (!(w > 0) || !std::isfinite(w)) in.fail("weight " + std::to_string(u[i]) + " x " + std::to_string(v[j]) + " is not positive and finite", mode_at);
+      weights.push_back(w);
+    }
+  return weights;
+}
+
 
 }  // namespace cadnurbs::cnb

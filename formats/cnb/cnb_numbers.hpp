@@ -3,6 +3,7 @@
 // and weights (lossless: a table of the distinct values, one index per point), and the rounding of
 // coordinates to a grid. docs/cnb.md, "Knot vector" and "Weights".
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "formats/cnb/cnb_stream.hpp"
@@ -45,6 +46,28 @@ void write_weights(ByteWriter& out, const std::vector<double>& weights, WeightCa
 // `point_count` points; refuses a table larger than that, an index outside it, a weight <= 0 or not
 // finite, a log step outside (0, 1).
 std::vector<double> read_weights(ByteReader& in, size_t point_count, WeightCache& cache);
+
+// A surface's weights as an outer product, w(i, j) = u[i]·v[j] (the weights of a swept, extruded or revolved
+// surface are its profile's times its path's: 511 weights of a moulding from 73 + 7). Mode 3 writes the two
+// factors as mode 1 tables and the reader multiplies them, so a weight comes back within a relative
+// `relative_error` of the original (the products of rounded cos(θ/2) values are not bit for bit the rounded
+// products).
+struct WeightFactors {
+  std::vector<double> u, v;   // u_count and v_count values > 0
+  double relative_error = 0;  // largest |u[i]·v[j] - w(i, j)| / w(i, j)
+};
+// The factors taken from the row and column through the first largest weight (u[i] = w(i, j0),
+// v[j] = w(i0, j) / w(i0, j0)), so that they are the file's own values where the largest is 1; nothing
+// when the weights hold fewer than two distinct values, the factors as many numbers as the weights, or a
+// product is off by more than `largest_relative_error`. Weights in VRML order (u fastest).
+std::optional<WeightFactors> weight_factors(const std::vector<double>& weights, int u_count, int v_count,
+                                            double largest_relative_error);
+// Mode 3.
+void write_weight_factors(ByteWriter& out, const WeightFactors& factors, WeightCache& cache);
+// A surface's weights, modes 0 to 3 (mode 3 only where `factors_allowed`: format version 6 on); refuses
+// what read_weights refuses, per factor.
+std::vector<double> read_surface_weights(ByteReader& in, size_t u_count, size_t v_count, WeightCache& cache,
+                                         bool factors_allowed);
 
 // How many different values `weights` holds.
 size_t distinct_count(const std::vector<double>& weights);

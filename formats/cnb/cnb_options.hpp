@@ -44,6 +44,7 @@ struct CnbWriteReport {
   size_t file_bytes = 0;
   int parallelogram_nets = 0, row_nets = 0;  // which predictor each surface's net took
   int quantised_weight_nets = 0;              // surfaces whose weights were rounded (not kept exactly)
+  int factored_weight_nets = 0;               // surfaces whose weights were written as two factors
   int mesh_groups = 0;                        // records holding several meshes of a node (kind 6)
   int piece_copies = 0;                       // pieces of a group's meshes coded as copies of others
   int periodic_meshes = 0;                    // traversal-coded meshes whose vertices a period predicts

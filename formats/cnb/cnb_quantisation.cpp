@@ -98,4 +98,26 @@ double weight_bound(const NurbsSurface& surface, double log_step, double world_s
   return epsilon / (1.0 - epsilon) * net_diagonal(surface) * world_scale;
 }
 
+WeightCoding weight_coding(const NurbsSurface& surface, double trim_budget, double world_scale) {
+  WeightCoding coding;
+  if (!surface.is_rational()) return coding;
+  constexpr double largest_factor_error = 1e-4, largest_factor_share = 1.0 / 64;
+  if (auto factors = weight_factors(surface.weights, surface.u_count, surface.v_count, largest_factor_error)) {
+    const double e = factors->relative_error;
+    const double bound = e / (1.0 - e) * net_diagonal(surface) * world_scale;
+    if (bound <= largest_factor_share * trim_budget) {
+      coding.factors = std::move(factors);
+      coding.bound = bound;
+      coding.trim_fraction = trim_budget > 0 ? 1.0 - bound / trim_budget : 1.0;
+      return coding;
+    }
+  }
+  if (quantises_weights(surface)) {
+    coding.log_step = weight_log_step(surface, trim_budget / 2, world_scale);
+    coding.bound = weight_bound(surface, coding.log_step, world_scale);
+    coding.trim_fraction = 0.5;
+  }
+  return coding;
+}
+
 }  // namespace cadnurbs::cnb

@@ -15,8 +15,11 @@
 // trim on the (original) surface moves by at most L·(|Δu| + |Δv|) <= 2·L·s; e is the largest exponent
 // with 2·L·s·scale <= trim_share·D. On the decoded surface the boundary moves by at most the sum of the
 // two bounds, <= D.
+#include <optional>
+
 #include "core/scene.hpp"
 #include "core/world_scale.hpp"
+#include "formats/cnb/cnb_numbers.hpp"
 #include "formats/cnb/cnb_options.hpp"
 
 namespace cadnurbs::cnb {
@@ -51,10 +54,25 @@ double trim_bound(const NurbsSurface& surface, int exponent, double world_scale)
 // Σ N_i w'_i, so |S' - S| <= ε/(1 - ε) · max |P_i - S| <= ε/(1 - ε) · (diagonal of the net's box); the
 // moved points add their own bound on top (convex hull, as above). Such a face gives half its trim share
 // to the weights and half to its trims.
+// A surface whose weights are an outer product (weight_factors) writes the two factors instead (format
+// version 6 on), whatever their number of distinct values; their products are off by a relative ε of
+// 1e-12 to 1e-6 (rounded cos(θ/2) values), and the same bound, with that ε, is added to the face's.
 constexpr size_t exact_weight_limit = 4;
 bool quantises_weights(const NurbsSurface& surface);
 // h for a world budget `budget`, and the world bound ε/(1 - ε)·diagonal·scale that h gives.
 double weight_log_step(const NurbsSurface& surface, double budget, double world_scale);
 double weight_bound(const NurbsSurface& surface, double log_step, double world_scale);
+
+// How a trimmed surface's weights are written, and what they take of its trims' world budget
+// `trim_budget` (trim_share·D·quantisation_scale): factors where they are off by at most 1e-4 (weights
+// written to 7 digits, as our .x3dv) and their bound is at most 1/64 of the budget (the trims' grid, a power
+// of two below their share, seldom changes), else rounded (quantises_weights: half the budget), else exact.
+struct WeightCoding {
+  std::optional<WeightFactors> factors;  // mode 3
+  double log_step = 0;                   // > 0: mode 2
+  double bound = 0;                      // world move of the surface that the weights' coding causes
+  double trim_fraction = 1;              // of the budget left to the trims
+};
+WeightCoding weight_coding(const NurbsSurface& surface, double trim_budget, double world_scale);
 
 }  // namespace cadnurbs::cnb

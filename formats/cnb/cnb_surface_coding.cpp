@@ -66,14 +66,17 @@ Cell read_residual_added(ByteReader& in, const Cell& prediction) {
 
 }  // namespace
 
-bool write_surface(ByteWriter& out, const NurbsSurface& s, double q, CodingState& state, double weight_log_step) {
+bool write_surface(ByteWriter& out, const NurbsSurface& s, double q, CodingState& state, const WeightCoding& weights) {
   out.varuint(s.u_order, Field::count);
   out.varuint(s.v_order, Field::count);
   out.varuint(s.u_count, Field::count);
   out.varuint(s.v_count, Field::count);
   write_knots(out, s.u_knots, state.knots);
   write_knots(out, s.v_knots, state.knots);
-  write_weights(out, s.weights, state.weights, weight_log_step);
+  if (weights.factors)
+    write_weight_factors(out, *weights.factors, state.weights);
+  else
+    write_weights(out, s.weights, state.weights, weights.log_step);
   std::vector<Cell> net;
   net.reserve(s.points.size());
   for (const auto& p : s.points) net.push_back(cell(p, q));
@@ -106,7 +109,7 @@ NurbsSurface read_surface(ByteReader& in, double q, CodingState& state) {
   s.u_knots = read_knots(in, u_count + s.u_order, state.knots);
   s.v_knots = read_knots(in, v_count + s.v_order, state.knots);
   const size_t n = u_count * v_count;
-  s.weights = read_weights(in, n, state.weights);
+  s.weights = read_surface_weights(in, u_count, v_count, state.weights, state.version >= 6);
   const size_t predictor_at = in.offset();
   const uint8_t predictor = in.byte(Field::structure);
   if (predictor > parallelogram) in.fail("unknown predictor " + std::to_string(predictor), predictor_at);

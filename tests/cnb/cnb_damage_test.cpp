@@ -59,7 +59,7 @@ TEST(CnbDamage, EveryFlippedByteIsRefused) {
     std::string expected;
     if (at < 4) expected = name + ": byte " + std::to_string(at) + ": not a .cnb file (the magic number is \\x89CNB)";
     else if (at == 4) expected = name + ": byte 4: version " + std::to_string(cnb::format_version ^ 0x24) +
-                            " is not one this reader knows (1, 2, 3, 4, 5)";
+                            " is not one this reader knows (1 to 6)";
     else expected = crc_message;
     ASSERT_EQ(error_of(damaged), expected) << "byte " << at;
   }
@@ -322,6 +322,29 @@ TEST(CnbDamage, MeshGroupsThatCannotBeRight) {
     EXPECT_EQ(error_of(cnb::pack(damaged, CnbOptions::Coder::deflate, nullptr)),
               name + ": decoded byte " + std::to_string(payload.size() - 1) + ": member 2 of a group of 2 meshes");
   }
+}
+
+// A surface whose weights are factors (mode 3, version 6 on): a version 5 file knew no such mode.
+TEST(CnbDamage, WeightFactorsBeforeVersion6) {
+  NurbsSurface s;
+  s.u_order = s.v_order = 2;
+  s.u_count = 3;
+  s.v_count = 2;
+  s.u_knots = {0, 0, 1, 2, 2};
+  s.v_knots = {0, 0, 1, 1};
+  s.points = {{0, 0, 0}, {1, 0, 0.5}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0.5}, {2, 1, 0}};
+  s.weights = {0.5, 2, 1, 0.125, 0.5, 0.25};
+  Scene scene;
+  scene.root.shapes.push_back({"", TrimmedSurface{s, {}}, std::nullopt});
+  CnbOptions options;
+  options.coder = CnbOptions::Coder::deflate;
+  CnbWriteReport report;
+  const std::string file = write_cnb(scene, options, &report);
+  ASSERT_EQ(report.factored_weight_nets, 1);
+  EXPECT_EQ(std::get<TrimmedSurface>(read_cnb(file, name).root.shapes[0].geometry).surface.weights, s.weights);
+  const std::string error = error_of(with_version(file, 5));
+  EXPECT_EQ(error.substr(0, name.size() + 15), name + ": decoded byte ");
+  EXPECT_EQ(error.substr(error.size() - 23), ": unknown weight mode 3");
 }
 
 // A group with copies (shape kind 7) of one mesh, one triangle, then one copy record: mesh `member`,

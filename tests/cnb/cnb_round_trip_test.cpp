@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "analysis/compaction/compact_scene.hpp"
@@ -11,6 +12,7 @@
 #include "analysis/tessellation/plan_tessellation_hints.hpp"
 #include "core/bounding_box.hpp"
 #include "core/nurbs_surface.hpp"
+#include "formats/cnb/cnb_numbers.hpp"
 #include "formats/cnb/cnb_quantisation.hpp"
 #include "formats/cnb/cnb_reader.hpp"
 #include "formats/cnb/cnb_writer.hpp"
@@ -139,6 +141,96 @@ TEST(CnbRoundTrip, ManyDistinctWeightsRoundedWithinDeviation) {
     EXPECT_LE(r.report.deviation_bound(), d);
     EXPECT_GT(r.measured.surfaces, 0.1 * d);
   }
+}
+
+// A swept surface: its weights are a profile's (u) times a path's (v), each product rounded to 12
+// significant digits as a STEP file writes it, so the products of the factors are not the file's values
+// bit for bit. With `break_product`, one weight is off the product by 0.1%.
+Scene swept_surface(bool break_product) {
+  const double c45 = 0.707106781187;
+  const std::vector<double> profile = {1, c45, 1, 0.894427191, 1, c45, 1, 0.948683298051, 1};
+  const std::vector<double> path = {1, c45, 1, c45, 1};
+  NurbsSurface s;
+  s.u_order = s.v_order = 3;
+  s.u_count = 9;
+  s.v_count = 5;
+  s.u_knots = {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4};
+  s.v_knots = {0, 0, 0, 1, 1, 2, 2, 2};
+  char digits[32];
+  for (int j = 0; j < s.v_count; ++j)
+    for (int i = 0; i < s.u_count; ++i) {
+      s.points.emplace_back(10.0 * i, 12.0 * j, 6.0 * std::sin(i + 0.7 * j));
+      std::snprintf(digits, sizeof digits, "%.12g", profile[i] * path[j]);
+      s.weights.push_back(std::stod(digits));
+    }
+  if (break_product) s.weights[s.index(4, 2)] *= 1.001;
+  Scene scene;
+  scene.root.shapes.push_back({"swept", TrimmedSurface{s, {domain_loop(s)}}, std::nullopt});
+  return scene;
+}
+
+// Its weights go into the file as the two factors (9 + 5 values, not 45 rounded ones) and come back within
+// the products' rounding; the surface stays within the bound, which allows for that rounding.
+TEST(CnbRoundTrip, SweptSurfaceWeightsWrittenAsFactors) {
+  const Scene scene = swept_surface(false);
+  const auto& weights = std::get<TrimmedSurface>(scene.root.shapes[0].geometry).surface.weights;
+  for (double d : {1.0, 0.01}) {
+    SCOPED_TRACE("D = " + std::to_string(d));
+    const RoundTrip r = round_trip(scene, d);
+    EXPECT_EQ(r.report.factored_weight_nets, 1);
+    EXPECT_EQ(r.report.quantised_weight_nets, 0);
+    const auto& back = std::get<TrimmedSurface>(r.decoded.root.shapes[0].geometry).surface.weights;
+    ASSERT_EQ(back.size(), weights.size());
+    double largest_change = 0;
+    for (size_t i = 0; i < weights.size(); ++i)
+      largest_change = std::max(largest_change, std::abs(back[i] / weights[i] - 1));
+    EXPECT_GT(largest_change, 0.0);
+    EXPECT_LT(largest_change, 1e-10);
+    EXPECT_LE(r.measured.max(), r.report.deviation_bound());
+    EXPECT_LE(r.report.deviation_bound(), d);
+    EXPECT_GT(r.measured.surfaces, 0.1 * d);
+    // The same surface with one weight off the product rounds all 45 (mode 2, half the trim share).
+    const RoundTrip rounded = round_trip(swept_surface(true), d);
+    EXPECT_EQ(rounded.report.factored_weight_nets, 0);
+    EXPECT_EQ(rounded.report.quantised_weight_nets, 1);
+    EXPECT_LT(r.report.weight_bytes + 20, rounded.report.weight_bytes);
+    std::cout << "swept D=" << d << ": " << r.bytes.size() << " bytes with factors (weights " << r.report.weight_bytes
+              << " payload bytes), " << rounded.bytes.size() << " rounded (" << rounded.report.weight_bytes << ")\n";
+  }
+}
+
+// The factors come from the row and column through the largest weight; a net that is no outer product,
+// or one of a single value, has none.
+TEST(CnbWeightFactors, OuterProductsOnly) {
+  // u = (0.5, 2, 1), v = (1, 0.25): the largest weight (2) is not at the first point.
+  const std::vector<double> w = {0.5, 2, 1, 0.125, 0.5, 0.25};
+  const auto f = cnb::weight_factors(w, 3, 2, 1e-6);
+  ASSERT_TRUE(f);
+  EXPECT_EQ(f->u, (std::vector<double>{0.5, 2, 1}));
+  EXPECT_EQ(f->v, (std::vector<double>{1, 0.25}));
+  EXPECT_EQ(f->relative_error, 0.0);
+  std::vector<double> off = w;
+  off[5] = 0.26;
+  EXPECT_FALSE(cnb::weight_factors(off, 3, 2, 1e-6));
+  const auto loose = cnb::weight_factors(off, 3, 2, 0.05);
+  ASSERT_TRUE(loose);
+  EXPECT_NEAR(loose->relative_error, 0.01 / 0.26, 1e-12);
+  EXPECT_FALSE(cnb::weight_factors(std::vector<double>(6, 0.7), 3, 2, 1e-6));  // one value: a table of one
+  EXPECT_FALSE(cnb::weight_factors({1, 0.5, 1, 0.5}, 2, 2, 1e-6));             // 2 + 2 factors for 4 weights
+}
+
+// The moulded capping's rational sweep (73 x 7 weights from 73 + 7), at 1e-3 of its diagonal.
+TEST(CnbRoundTrip, MouldedCappingWeightsWrittenAsFactors) {
+  const Scene scene = read_vrml(sample_path("capping-moulded.x3dv"));
+  const double d = 1e-3 * scene_bounding_box(scene).diagonal().norm();
+  const RoundTrip r = round_trip(scene, d);
+  EXPECT_EQ(r.report.factored_weight_nets, 1);
+  EXPECT_EQ(r.report.quantised_weight_nets, 0);
+  EXPECT_LE(r.measured.max(), r.report.deviation_bound());
+  EXPECT_LE(r.report.deviation_bound(), d);
+  EXPECT_LT(r.report.weight_bytes, 260u);  // the weights' payload bytes; 1,178 when they were rounded
+  std::cout << "capping-moulded D=" << d << ": " << r.bytes.size() << " bytes, weights " << r.report.weight_bytes
+            << " payload bytes\n";
 }
 
 TEST(CnbCorpus, EveryEntropyCoderDecodesToTheSameScene) {

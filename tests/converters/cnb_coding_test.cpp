@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+
 #include "analysis/compaction/compact_scene.hpp"
 #include "analysis/mesh/count_boundary_edges.hpp"
 #include "analysis/mesh/scene_triangles.hpp"
@@ -46,6 +49,28 @@ TEST(CnbCoding, AFileTheReaderSewsIsQuantisedFineEnoughToStayClosed) {
   CnbOptions at_d = coding.options;
   at_d.quantisation_scale = 1;
   EXPECT_GT(meshed_as_read(read_cnb(write_cnb(wing, at_d), "wing.cnb"), d, report).boundary, 0);
+}
+
+// Scales go down by half octaves: the moulded capping's compact form (its end caps exact polygons, which
+// the reader sews) sews alike at 2^-1.5 of D, where octaves would have taken 1/4.
+TEST(CnbCoding, TheScaleThatSewsIsTakenToHalfAnOctave) {
+  const Scene part = read_scene(std::string(CADNURBS_SOURCE_DIR) + "/samples/capping-moulded.step");
+  const Scene capping = compact_scene(part, written_tolerance(part, 0));
+  ASSERT_TRUE(sewn_when_meshed(capping));
+  const double d = 1e-3 * scene_bounding_box(capping).diagonal().norm();
+  TessellationReport own_report, report;
+  const EdgeCounts own = meshed_as_read(capping, d, own_report);
+  const CnbCoding coding = cnb_coding(capping, d, nullptr, false);
+  EXPECT_NEAR(coding.options.quantisation_scale, std::sqrt(0.125), 1e-12);
+  EXPECT_LE(coding.written.deviation_bound(), d);
+  const EdgeCounts back = meshed_as_read(read_cnb(coding.bytes, "capping-moulded.cnb"), d, report);
+  EXPECT_LE(back.boundary, own.boundary);
+  EXPECT_EQ(report.uncertified_triangles, 0);
+  // At 1/2 of D it does not sew alike: one end cap stays open.
+  CnbOptions at_half = coding.options;
+  at_half.quantisation_scale = 0.5;
+  EXPECT_GT(meshed_as_read(read_cnb(write_cnb(capping, at_half), "capping-moulded.cnb"), d, report).boundary,
+            own.boundary);
 }
 
 TEST(CnbCoding, AFileNamingItsSharedEdgesIsQuantisedForD) {

@@ -1,10 +1,10 @@
 # cmake -DCADNURBS=... -DSAMPLES=... -DCORPUS=... -DOUTPUT=... -P write_cnb_seeds.cmake: the .cnb fuzz
-# target's seeds, written by the given cadnurbs into OUTPUT (emptied first): every sample STEP file
-# (trimmed NURBS), every sample STL (meshes), and the corpus's NURBS VRML/X3D files that cadnurbs reads
-# (weights, several surfaces); each sample STEP file once more at --deviation 1 (mm), and the corpus's
-# splinecage.stp, whose bodies are written as traversal-coded meshes there, io1-tu-203.stp, whose
-# colours are written there as a mesh group, and dm1-id-214.stp, whose meshes hold pieces coded as copies
-# there (a mesh group with copies). Fails if one cannot be written.
+# target's seeds, written by the given cadnurbs into OUTPUT (emptied first): every sample STEP file (trimmed
+# NURBS; the moulded capping's weights as two factors), every sample STL (meshes), and the corpus's NURBS
+# VRML/X3D files that cadnurbs reads (weights, several surfaces); each sample STEP file once more at
+# --deviation 1 (mm), and the corpus's splinecage.stp, whose bodies are written as traversal-coded meshes
+# there, io1-tu-203.stp, whose colours are written there as a mesh group, and dm1-id-214.stp, whose meshes
+# hold pieces coded as copies there (a mesh group with copies). Fails if one cannot be written.
 file(REMOVE_RECURSE ${OUTPUT})
 file(MAKE_DIRECTORY ${OUTPUT})
 file(GLOB inputs ${SAMPLES}/*.step ${SAMPLES}/*.stl)
