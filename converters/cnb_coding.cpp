@@ -26,8 +26,8 @@ constexpr double kMeshShare = 0.4;
 // bytes before mesh groups), while 0.6 or 0.8 for all was larger (77,510 and 80,860).
 constexpr double kWholeMeshShares[] = {0.6, 0.8};
 // They are tried, too, where the NURBS were chosen but a wholly meshed candidate came within this factor:
-// the Phoenix MC 1,5/2-GF MountHole at 0.01 mm codes its NURBS in 2,755 bytes, its meshes in 3,732 at 0.4
-// and in 2,468 at 0.8.
+// the Phoenix MC 1,5/2-GF MountHole at 0.01 mm codes its NURBS in 3,509 bytes (at 561b8b1), its meshes in
+// 3,732 at 0.4 and in 2,468 at 0.8.
 constexpr double kMeshedWithin = 1.5;
 // A grid a little finer than the bound needs can code smaller: where a part's pitches fall in whole steps,
 // its repeats predict exactly. A scene without trimmed surfaces (every face meshed) is written at whichever
@@ -44,11 +44,8 @@ struct MeshedAsRead {
   double open_length = 0;
 };
 
-// `written_bound`: the .cnb's, as its reader takes it (read_compact_binary), 0 for the scene itself.
-MeshedAsRead meshed_as_read(const Scene& scene, double d, double written_bound = 0) {
-  BrepTranslation loaded;
-  loaded.written_bound = written_bound;
-  const CertifiedMesh meshed = certified_mesh(loaded, scene, d);
+MeshedAsRead meshed_as_read(const Scene& scene, double d) {
+  const CertifiedMesh meshed = certified_mesh(BrepTranslation{}, scene, d);
   return {meshed.report.uncertified_triangles, meshed.report.unshared_edge_uses,
           count_boundary_edges(weld_exact(scene_triangles(meshed.meshes))).boundary_length};
 }
@@ -56,8 +53,7 @@ MeshedAsRead meshed_as_read(const Scene& scene, double d, double written_bound =
 // The quantisation scale of the header's rule for `scene` (written with `options`), a scene the reader sews.
 double scale_keeping_sewn(const Scene& scene, const CnbOptions& options) {
   const double d = options.max_deviation;
-  const double diagonal = scene_bounding_box(scene).diagonal().norm();
-  const SewingTolerance tolerance = sewing_tolerance(diagonal, d);
+  const SewingTolerance tolerance = sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), d);
   // Last, boundaries moved by at most half the tolerance within which sewing merges vertices first.
   const double safe = std::min(0.125, 0.5 * tolerance.first / d);
   SewingReport own;
@@ -68,18 +64,15 @@ double scale_keeping_sewn(const Scene& scene, const CnbOptions& options) {
     try {
       CnbOptions trial = options;
       trial.quantisation_scale = scale;
-      const CnbFile file = read_cnb_file(write_cnb(scene, trial), "the scene as written");
-      const Scene& decoded = file.scene;
-      // Its reader sews it within twice the bound its header states (sewing_tolerance).
-      const double bound = file.deviation_bound;
+      const Scene decoded = read_cnb(write_cnb(scene, trial), "the scene as written");
       SewingReport sewn;
-      sew_faces(decoded, sewing_tolerance(diagonal, d, bound), &sewn);
+      sew_faces(decoded, tolerance, &sewn);
       if (sewn.open_length > 1.01 * own.open_length + d ||
           sewn.open_pieces > own.open_pieces + (own.open_pieces + 99) / 100)
         continue;
       // Sewn alike; meshed alike too? (Only once: a mesh of pieces sewn across moved vertices can take
       // minutes, so a failure goes straight to the safe scale.)
-      const MeshedAsRead mine = meshed_as_read(scene, d), back = meshed_as_read(decoded, d, bound);
+      const MeshedAsRead mine = meshed_as_read(scene, d), back = meshed_as_read(decoded, d);
       const bool alike = back.uncertified <= mine.uncertified && back.unshared <= mine.unshared &&
                          back.open_length <= 1.01 * mine.open_length + d;
       return alike ? scale : safe;

@@ -104,10 +104,8 @@ BrepTranslation read_rhino_3dm(const std::string& path, const SceneReadOptions& 
 }
 
 BrepTranslation read_compact_binary(const std::string& path, const SceneReadOptions&) {
-  CnbFile file = read_cnb_file(read_file(path), path);
   BrepTranslation read;
-  read.scene = std::move(file.scene);
-  read.written_bound = file.deviation_bound;
+  read.scene = read_cnb(read_file(path), path);
   return read;
 }
 

@@ -104,8 +104,7 @@ CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, 
   CertifiedMesh result;
   result.sewn = loaded.face_count == 0 && sewn_when_meshed(scene);
   if (result.sewn) {
-    result.sewing_tolerance =
-        sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), max_deviation, loaded.written_bound);
+    result.sewing_tolerance = sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), max_deviation);
     result.faces = sew_faces(scene, result.sewing_tolerance, &result.sewing);
   }
   result.meshes =

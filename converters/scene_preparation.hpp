@@ -43,7 +43,7 @@ struct CertifiedMesh {
 
 // Every NURBS face of `scene` tessellated within `max_deviation` (tessellate_to_deviation). A scene read
 // from a file that names no edges (loaded.face_count == 0: VRML/X3D, our own NURBS files) is sewn first
-// (sew_faces at sewing_tolerance(diagonal, D, loaded.written_bound)), so that its mesh is as watertight as the B-rep's; unless
+// (sew_faces at sewing_tolerance(diagonal, D)), so that its mesh is as watertight as the B-rep's; unless
 // its loops carry shared-edge numbers and it holds no polygon sets (a .cnb of the exact NURBS): sewing
 // at D/4 would miss what the file already says, as the quantised trims of a .cnb at D may lie up to D
 // apart (as1-oc-214's .cnb at 1 mm: 236 pieces left open).

@@ -69,9 +69,9 @@ void sew_group(std::vector<SewFace>& faces, const std::vector<int>& members, con
 
 }  // namespace
 
-SewingTolerance sewing_tolerance(double bounding_box_diagonal, double max_deviation, double written_bound) {
+SewingTolerance sewing_tolerance(double bounding_box_diagonal, double max_deviation) {
   const double largest = 0.25 * max_deviation;
-  return {std::min(std::max(1e-5 * bounding_box_diagonal, 2.0 * written_bound), largest), largest};
+  return {std::min(1e-5 * bounding_box_diagonal, largest), largest};
 }
 
 Scene sew_faces(const Scene& scene, const SewingTolerance& tolerance, SewingReport* report_out) {

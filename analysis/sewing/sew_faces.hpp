@@ -58,11 +58,10 @@ struct SewingReport {
 };
 
 // The tolerances for a file read back and meshed at D: first ten times the precision cadnurbs writes
-// coordinates with by default (1e-6 of the bounding-box diagonal), or twice `written_bound` where that is
-// more (a .cnb's writer moves each boundary by up to its bound, so faces that met may part by twice it);
-// largest D/4, so that every sewn edge lies within D of both its faces (the tessellator certifies it on
-// each) and faces 10 D apart are never sewn. (first is D/4 too when that is smaller.)
-SewingTolerance sewing_tolerance(double bounding_box_diagonal, double max_deviation, double written_bound = 0);
+// coordinates with by default (1e-6 of the bounding-box diagonal), largest D/4, so that every sewn edge
+// lies within D of both its faces (the tessellator certifies it on each) and faces 10 D apart are never
+// sewn. (first is D/4 too when that is smaller.)
+SewingTolerance sewing_tolerance(double bounding_box_diagonal, double max_deviation);
 
 // Refuses (std::invalid_argument) tolerances that are not positive numbers with largest >= first.
 Scene sew_faces(const Scene& scene, const SewingTolerance& tolerance, SewingReport* report = nullptr);

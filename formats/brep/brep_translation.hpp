@@ -29,10 +29,6 @@ struct BrepTranslation {
   // Indexed by TrimEdgeRef::edge: true for a degenerated edge (a pole of a sphere, the apex of a cone),
   // whose 3D image is a single point.
   std::vector<bool> degenerated_edges;
-  // How far the file's writer may have moved any face's boundary (a .cnb's deviation bound; 0 for files
-  // that keep their geometry to the writer's printed precision): two faces that met may lie twice that
-  // apart, which sewing then bridges (sewing_tolerance).
-  double written_bound = 0;
 };
 
 }  // namespace cadnurbs

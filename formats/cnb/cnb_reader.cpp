@@ -201,11 +201,10 @@ class RecordingSource : public ByteSource {
   CnbPayload& record_;
 };
 
-CnbFile decode_scene(ByteSource& source, const OpenedPayload& payload, const std::string& name) {
+Scene decode_scene(ByteSource& source, const OpenedPayload& payload, const std::string& name) {
   ByteReader in(source, payload.size);
   try {
-    CnbFile file;
-    Scene& scene = file.scene;
+    Scene scene;
     SceneDecoder decoder{in, 0, {}, {}, 0, numbers_per_payload_byte * payload.size + numbers_allowance, {}};
     decoder.state.version = payload.version;
     // Version 1 wrote the units' sizes and D as raw float64, versions 2 and 3 as exact numbers; versions 1
@@ -217,16 +216,17 @@ CnbFile decode_scene(ByteSource& source, const OpenedPayload& payload, const std
     scene.unit.millimetres = number("the unit's size");
     scene.source_unit.name = in.text();
     scene.source_unit.millimetres = number("the source unit's size");
-    file.max_deviation = number("the maximum deviation");
+    number("the maximum deviation");
     const size_t q_at = in.offset();
     decoder.q = payload.version < 3 ? in.float64() : static_cast<double>(in.float32());
     if (!(decoder.q > 0) || !std::isfinite(decoder.q)) in.fail("the grid step is not positive and finite", q_at);
-    file.deviation_bound = payload.version < 3 ? decoder.finite_float("the deviation bound") : read_exact_number(in);
-    for (double* value : {&file.max_deviation, &file.deviation_bound})
-      if (!(*value > 0)) *value = 0;
+    if (payload.version < 3)
+      decoder.finite_float("the deviation bound");
+    else
+      read_exact_number(in);
     scene.root = decoder.node("", 0);
     if (in.left() > 0) in.fail(std::to_string(in.left()) + " bytes after the scene");
-    return file;
+    return scene;
   } catch (const PayloadError& e) {
     throw FileError(name + ": decoded byte " + std::to_string(e.offset) + ": " + e.what());
   }
@@ -234,12 +234,10 @@ CnbFile decode_scene(ByteSource& source, const OpenedPayload& payload, const std
 
 }  // namespace
 
-CnbFile read_cnb_file(const std::string& bytes, const std::string& name) {
+Scene read_cnb(const std::string& bytes, const std::string& name) {
   const OpenedPayload payload = open_payload(bytes, name);
   return decode_scene(*payload.source, payload, name);
 }
-
-Scene read_cnb(const std::string& bytes, const std::string& name) { return read_cnb_file(bytes, name).scene; }
 
 CnbPayload read_cnb_payload(const std::string& bytes, const std::string& name) {
   const OpenedPayload payload = open_payload(bytes, name);

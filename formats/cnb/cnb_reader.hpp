@@ -14,15 +14,6 @@ namespace cadnurbs {
 // bytes can hold. Every decoded shape is validated (an invalid one is refused the same way).
 Scene read_cnb(const std::string& bytes, const std::string& name);
 
-// The same, with what the header says of the bound: the D the file was written for and the deviation
-// bound its writer reached (docs/cnb.md, "The bound"; 0 where the header's value is not a positive number).
-struct CnbFile {
-  Scene scene;
-  double max_deviation = 0;
-  double deviation_bound = 0;
-};
-CnbFile read_cnb_file(const std::string& bytes, const std::string& name);
-
 // The decoded payload of a file as read_cnb parses it: each byte and the coder context it is read in
 // (docs/cnb.md, "The arithmetic coder"), for tools that study or train the coder
 // (bench/cnb_coder_prior.cpp). Refuses what read_cnb refuses, in the same words.

@@ -2,8 +2,6 @@
 // watertight, and only edges that coincide along their whole length are sewn.
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include "analysis/mesh/count_boundary_edges.hpp"
 #include "analysis/sewing/sew_faces.hpp"
 #include "analysis/tessellation/tessellate_to_deviation.hpp"
@@ -79,26 +77,6 @@ TEST(SewFaces, SideAlongTwoNeighboursIsCut) {
   const EdgeCounts e = open_edges(sewn, 0.01);
   EXPECT_EQ(e.boundary, 0);
   EXPECT_EQ(e.non_manifold, 0);
-}
-
-// A file whose writer moved boundaries (a .cnb's quantisation, its bound b) is sewn within 2 b: the split
-// top's middle vertices 3e-4 off the front and back tops are cut there only when b = 2e-4 is allowed for.
-TEST(SewFaces, MovedBoundariesAreSewnWithinTwiceTheWrittenBound) {
-  PolygonMesh moved = cube(true);
-  moved.positions[8].y() += 3e-4;
-  moved.positions[9].y() -= 3e-4;
-  const double d = 0.01, diagonal = std::sqrt(3.0);
-  EXPECT_EQ(sewing_tolerance(diagonal, d).first, 1e-5 * diagonal);
-  EXPECT_EQ(sewing_tolerance(diagonal, d, 2e-4).first, 4e-4);
-  EXPECT_EQ(sewing_tolerance(diagonal, d, 1.0).first, d / 4);  // never beyond the largest
-  SewingReport plain, allowed;
-  sew_faces(scene_of(moved), sewing_tolerance(diagonal, d), &plain);
-  const Scene sewn = sew_faces(scene_of(moved), sewing_tolerance(diagonal, d, 2e-4), &allowed);
-  EXPECT_EQ(plain.cuts, 0);
-  EXPECT_GT(plain.open_pieces, 0);
-  EXPECT_EQ(allowed.cuts, 2);
-  EXPECT_EQ(allowed.open_pieces, 0);
-  EXPECT_EQ(open_edges(sewn, d).boundary, 0);
 }
 
 TEST(SewFaces, FacesPlacedByTransformsAreSewnInWorldCoordinates) {

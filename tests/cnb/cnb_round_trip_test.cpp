@@ -199,20 +199,6 @@ TEST(CnbRoundTrip, SweptSurfaceWeightsWrittenAsFactors) {
   }
 }
 
-// read_cnb_file gives what the header says of the bound: the D asked for, and the writer's bound rounded up
-// to three significant digits (which a reader sews within twice of: sewing_tolerance).
-TEST(CnbRoundTrip, HeaderBoundReadBack) {
-  const Scene scene = swept_surface(false);
-  for (double d : {1.0, 0.01}) {
-    const RoundTrip r = round_trip(scene, d);
-    const CnbFile file = read_cnb_file(r.bytes, "part.cnb");
-    EXPECT_EQ(file.max_deviation, d);
-    EXPECT_GE(file.deviation_bound, r.report.deviation_bound());
-    EXPECT_LE(file.deviation_bound, 1.01 * r.report.deviation_bound());
-    EXPECT_EQ(paired_scene_deviation(file.scene, r.decoded).max(), 0.0);
-  }
-}
-
 // The factors come from the row and column through the largest weight; a net that is no outer product,
 // or one of a single value, has none.
 TEST(CnbWeightFactors, OuterProductsOnly) {
