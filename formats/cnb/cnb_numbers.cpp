@@ -197,30 +197,6 @@ void WeightCache::add(double value) {
 
 namespace {
 // Mode 1 after its mode byte: the table of distinct values, then (for two or more) an index per point.
-void write_weight_table(ByteWriter& out, const std::vector<double>& weights, WeightCache& cache);
-std::vector<double> read_weight_table(ByteReader& in, size_t point_count, WeightCache& cache);
-// Modes 0 to 2, the mode byte (at `mode_at`) read.
-std::vector<double> read_weights_of_mode(ByteReader& in, uint8_t mode, size_t mode_at, size_t point_count, WeightCache& cache);
-}  // namespace
-
-void write_weights(ByteWriter& out, const std::vector<double>& weights, WeightCache& cache, double log_step) {
-  if (weights.empty()) { out.byte(0, Field::weight); return; }
-  if (log_step > 0) {
-    out.byte(2, Field::weight);
-    out.float64(log_step);
-    int64_t previous = 0;
-    for (double w : weights) {
-      const int64_t n = on_grid(std::log2(w), log_step);
-      out.varsint(n - previous, Field::weight);
-      previous = n;
-    }
-    return;
-  }
-  out.byte(1, Field::weight);
-  write_weight_table(out, weights, cache);
-}
-
-namespace {
 void write_weight_table(ByteWriter& out, const std::vector<double>& weights, WeightCache& cache) {
   std::vector<double> table;
   std::vector<uint64_t> index;
@@ -247,41 +223,7 @@ void write_weight_table(ByteWriter& out, const std::vector<double>& weights, Wei
   if (table.size() > 1)
     for (uint64_t i : index) out.varuint(i, Field::weight);
 }
-}  // namespace
 
-std::vector<double> read_weights(ByteReader& in, size_t point_count, WeightCache& cache) {
-  const size_t mode_at = in.offset();
-  const uint8_t mode = in.byte(Field::weight);
-  return read_weights_of_mode(in, mode, mode_at, point_count, cache);
-}
-
-namespace {
-std::vector<double> read_weights_of_mode(ByteReader& in, uint8_t mode, size_t mode_at, size_t point_count, WeightCache& cache) {
-  if (mode == 0) return {};
-  if (mode == 2) {
-    const size_t step_at = in.offset();
-    const double step = in.float64();
-    if (!(step > 0 && step < 1)) in.fail("weight log step " + std::to_string(step) + " outside (0, 1)", step_at);
-    if (point_count > in.left()) in.fail(std::to_string(point_count) + " weights cannot fit in the " + std::to_string(in.left()) + " bytes left");
-    std::vector<double> weights(point_count);
-    int64_t n = 0;
-    for (auto& w : weights) {
-      const size_t at = in.offset();
-      const int64_t r = in.varsint(Field::weight);
-      if (std::abs(static_cast<double>(r)) > 0x1p52 || std::abs(static_cast<double>(n) + static_cast<double>(r)) > 0x1p52)
-        in.fail("weight exponent out of range", at);
-      n += r;
-      w = std::exp2(static_cast<double>(n) * step);
-      if (!(w > 0) || !std::isfinite(w)) in.fail("weight 2^(" + std::to_string(n) + " x " + std::to_string(step) + ") is not positive and finite", at);
-    }
-    return weights;
-  }
-  if (mode != 1) in.fail("unknown weight mode " + std::to_string(mode), mode_at);
-  return read_weight_table(in, point_count, cache);
-}
-}  // namespace
-
-namespace {
 std::vector<double> read_weight_table(ByteReader& in, size_t point_count, WeightCache& cache) {
   const size_t start = in.offset();
   const size_t t = in.count(1);
@@ -311,7 +253,55 @@ std::vector<double> read_weight_table(ByteReader& in, size_t point_count, Weight
   }
   return weights;
 }
+
+// Modes 0 to 2, the mode byte (at `mode_at`) read.
+std::vector<double> read_weights_of_mode(ByteReader& in, uint8_t mode, size_t mode_at, size_t point_count, WeightCache& cache) {
+  if (mode == 0) return {};
+  if (mode == 2) {
+    const size_t step_at = in.offset();
+    const double step = in.float64();
+    if (!(step > 0 && step < 1)) in.fail("weight log step " + std::to_string(step) + " outside (0, 1)", step_at);
+    if (point_count > in.left()) in.fail(std::to_string(point_count) + " weights cannot fit in the " + std::to_string(in.left()) + " bytes left");
+    std::vector<double> weights(point_count);
+    int64_t n = 0;
+    for (auto& w : weights) {
+      const size_t at = in.offset();
+      const int64_t r = in.varsint(Field::weight);
+      if (std::abs(static_cast<double>(r)) > 0x1p52 || std::abs(static_cast<double>(n) + static_cast<double>(r)) > 0x1p52)
+        in.fail("weight exponent out of range", at);
+      n += r;
+      w = std::exp2(static_cast<double>(n) * step);
+      if (!(w > 0) || !std::isfinite(w)) in.fail("weight 2^(" + std::to_string(n) + " x " + std::to_string(step) + ") is not positive and finite", at);
+    }
+    return weights;
+  }
+  if (mode != 1) in.fail("unknown weight mode " + std::to_string(mode), mode_at);
+  return read_weight_table(in, point_count, cache);
+}
 }  // namespace
+
+void write_weights(ByteWriter& out, const std::vector<double>& weights, WeightCache& cache, double log_step) {
+  if (weights.empty()) { out.byte(0, Field::weight); return; }
+  if (log_step > 0) {
+    out.byte(2, Field::weight);
+    out.float64(log_step);
+    int64_t previous = 0;
+    for (double w : weights) {
+      const int64_t n = on_grid(std::log2(w), log_step);
+      out.varsint(n - previous, Field::weight);
+      previous = n;
+    }
+    return;
+  }
+  out.byte(1, Field::weight);
+  write_weight_table(out, weights, cache);
+}
+
+std::vector<double> read_weights(ByteReader& in, size_t point_count, WeightCache& cache) {
+  const size_t mode_at = in.offset();
+  const uint8_t mode = in.byte(Field::weight);
+  return read_weights_of_mode(in, mode, mode_at, point_count, cache);
+}
 
 std::optional<WeightFactors> weight_factors(const std::vector<double>& weights, int u_count, int v_count,
                                             double largest_relative_error) {
@@ -361,6 +351,5 @@ std::vector<double> read_surface_weights(ByteReader& in, size_t u_count, size_t 
     }
   return weights;
 }
-
 
 }  // namespace cadnurbs::cnb

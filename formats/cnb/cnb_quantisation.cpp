@@ -93,9 +93,15 @@ double weight_log_step(const NurbsSurface& surface, double budget, double world_
   return std::min(0.5, 0.999 * 2.0 * std::log2(1.0 + epsilon));
 }
 
-double weight_bound(const NurbsSurface& surface, double log_step, double world_scale) {
-  const double epsilon = std::exp2(log_step / 2.0) - 1.0;
+namespace {
+// The world move of a surface whose weights are each off by a relative error of at most `epsilon`.
+double relative_weight_error_bound(const NurbsSurface& surface, double epsilon, double world_scale) {
   return epsilon / (1.0 - epsilon) * net_diagonal(surface) * world_scale;
+}
+}  // namespace
+
+double weight_bound(const NurbsSurface& surface, double log_step, double world_scale) {
+  return relative_weight_error_bound(surface, std::exp2(log_step / 2.0) - 1.0, world_scale);
 }
 
 WeightCoding weight_coding(const NurbsSurface& surface, double trim_budget, double world_scale) {
@@ -103,8 +109,7 @@ WeightCoding weight_coding(const NurbsSurface& surface, double trim_budget, doub
   if (!surface.is_rational()) return coding;
   constexpr double largest_factor_error = 1e-4, largest_factor_share = 1.0 / 64;
   if (auto factors = weight_factors(surface.weights, surface.u_count, surface.v_count, largest_factor_error)) {
-    const double e = factors->relative_error;
-    const double bound = e / (1.0 - e) * net_diagonal(surface) * world_scale;
+    const double bound = relative_weight_error_bound(surface, factors->relative_error, world_scale);
     if (bound <= largest_factor_share * trim_budget) {
       coding.factors = std::move(factors);
       coding.bound = bound;
