@@ -86,6 +86,7 @@ std::optional<CertifiedBodyMesh> certified_body_mesh(const Scene& body, double m
   if (report.uncertified_triangles > 0)
     return refuse(std::to_string(report.uncertified_triangles) + " triangles not certified");
   CertifiedBodyMesh out;
+  out.unshared_edge_uses = report.unshared_edge_uses;
   for (size_t k = 0; k < body.root.children.size(); ++k)
     out.shapes.push_back(
         merged_per_colour(body.root.children[k], tessellated.root.children[k], kWeldShare * own_deviation, out));

@@ -25,6 +25,7 @@ struct CertifiedBodyMesh {
   int faces = 0;               // trimmed surfaces meshed
   long polygons = 0;           // planar polygons fanned
   long triangles = 0;          // in the merged, welded meshes
+  int unshared_edge_uses = 0;  // shared edges its faces could not match within the deviation: cracks
 };
 
 // `body` is a body scene (scene_bodies.hpp: the body's nodes as children of an empty root, at their world

@@ -20,6 +20,7 @@ struct Candidate {
   int bodies = 0, bodies_refused = 0;  // of the scene it was made from
   int bodies_meshed = 0, faces_meshed = 0;
   long polygons_meshed = 0, triangles = 0;
+  int unshared_edge_uses = 0;
   double certified_deviation = 0;
   size_t bytes = 0;
 };
@@ -49,6 +50,7 @@ Candidate with_meshes(const Scene& scene, const SceneBodies& bodies,
     out.faces_meshed += mesh.faces;
     out.polygons_meshed += mesh.polygons;
     out.triangles += mesh.triangles;
+    out.unshared_edge_uses += mesh.unshared_edge_uses;
     out.certified_deviation = std::max(out.certified_deviation, mesh.world_deviation);
   }
   return out;
@@ -139,6 +141,7 @@ Scene cheapest_coding(const Scene& scene, const CodingChoiceParameters& paramete
     r.faces_meshed = best->faces_meshed;
     r.polygons_meshed = best->polygons_meshed;
     r.triangles = best->triangles;
+    r.unshared_edge_uses = best->unshared_edge_uses;
     r.certified_deviation = best->certified_deviation;
     r.as_is_bytes = as_is.bytes;
     r.per_body_bytes = per_body.bytes;

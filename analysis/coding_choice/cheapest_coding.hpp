@@ -58,6 +58,9 @@ struct CodingChoiceReport {
   int faces_meshed = 0;            // trimmed surfaces written as meshes in the returned scene
   long polygons_meshed = 0;        // planar polygons written as triangles in the returned scene
   long triangles = 0;              // triangles of the meshes made, in the returned scene
+  // Of those meshes' faces, the uses of a shared edge that did not match it within t·D (the part's own
+  // faces lie farther apart there): each leaves a crack that a larger t may close.
+  int unshared_edge_uses = 0;
   double certified_deviation = 0;  // largest world deviation of the meshes made (0 when none), <= t·D
   // The whole candidates; exact_meshed_bytes is 0 when no exact part was given, merged_meshes_bytes when
   // no body could be meshed.

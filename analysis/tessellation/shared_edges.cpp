@@ -79,6 +79,38 @@ void SharedEdges::find_degenerate_curves() {
     const bool gap_closure = c.unnamed && !loop_is_tiny(u.face, u.loop);
     c.degenerate = is_degenerate_segment(*faces_[u.face].eval, segment(u), (gap_closure ? 0.5 : kSameVertex) * d_);
   }
+  // Consecutive gap closures collapse together: a run of them is one vertex only while its end stays
+  // within D/2 of its start. Otherwise a run of short open edges (a sewn file's open rim: the impeller's
+  // blades, 61 pieces with several below D/2 in a row) would pull the face's boundary more than D off
+  // and leave its triangles uncertified.
+  for (const Face& f : faces_)
+    for (size_t l = 0; l < f.loops.size(); ++l) {
+      const auto& ids = f.curve[l];
+      const int n = static_cast<int>(ids.size());
+      auto gap_collapsed = [&](int k) {
+        const ModelCurve& c = curves_[ids[k]];
+        return c.unnamed && c.degenerate && !is_degenerate_segment(*f.eval, f.loops[l].segments[k], kSameVertex * d_);
+      };
+      auto corner = [&](int k) {  // the 3D point where segment k starts
+        const Eigen::Vector2d uv = segment_start(f.loops[l].segments[k]);
+        return f.eval->point(uv.x(), uv.y());
+      };
+      int first = 0;
+      while (first < n && gap_collapsed(first)) ++first;
+      if (first == n) continue;  // a tiny loop's segments are never gap closures
+      Eigen::Vector3d run_start = corner((first + 1) % n);
+      for (int i = 1; i <= n; ++i) {
+        const int k = (first + i) % n;
+        if (!gap_collapsed(k)) {
+          run_start = corner((k + 1) % n);
+          continue;
+        }
+        if ((corner((k + 1) % n) - run_start).norm() > 0.5 * d_) {
+          curves_[ids[k]].degenerate = false;
+          run_start = corner((k + 1) % n);
+        }
+      }
+    }
 }
 
 void SharedEdges::join_vertices() {
