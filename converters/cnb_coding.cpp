@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <optional>
-#include <iterator>
 #include <stdexcept>
 #include <utility>
 #include <vector>

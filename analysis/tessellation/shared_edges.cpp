@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <vector>
 
 #include "analysis/eval/sample_trim_segment.hpp"
 #include "analysis/mesh/point_hash_grid.hpp"
@@ -69,6 +70,8 @@ void SharedEdges::find_degenerate_curves() {
     }
     return it->second;
   };
+  // Which curves are one vertex only as gap closures (not as curves shorter than kSameVertex of D).
+  std::vector<bool> gap_collapsed(static_cast<size_t>(curves_.size()), false);
   for (int i = 0; i < curves_.size(); ++i) {
     ModelCurve& c = curves_[CurveId{i}];
     if (c.uses.empty()) continue;
@@ -77,37 +80,36 @@ void SharedEdges::find_degenerate_curves() {
     // beside the neighbouring face (Ventilator.stp). A loop made only of such segments closes no
     // gap: a small hole read back from a file that names no edges (11752.stp) stays a hole.
     const bool gap_closure = c.unnamed && !loop_is_tiny(u.face, u.loop);
-    c.degenerate = is_degenerate_segment(*faces_[u.face].eval, segment(u), (gap_closure ? 0.5 : kSameVertex) * d_);
+    const SurfaceEvaluator& surface = *faces_[u.face].eval;
+    const bool tiny = is_degenerate_segment(surface, segment(u), kSameVertex * d_);
+    c.degenerate = tiny || (gap_closure && is_degenerate_segment(surface, segment(u), 0.5 * d_));
+    gap_collapsed[static_cast<size_t>(i)] = c.degenerate && !tiny;
   }
   // Consecutive gap closures collapse together: a run of them is one vertex only while its end stays
   // within D/2 of its start. Otherwise a run of short open edges (a sewn file's open rim: the impeller's
   // blades, 61 pieces with several below D/2 in a row) would pull the face's boundary more than D off
-  // and leave its triangles uncertified.
+  // and leave its triangles uncertified. (Unnamed curves have one use each: a loop's own.)
   for (const Face& f : faces_)
     for (size_t l = 0; l < f.loops.size(); ++l) {
       const auto& ids = f.curve[l];
       const int n = static_cast<int>(ids.size());
-      auto gap_collapsed = [&](int k) {
-        const ModelCurve& c = curves_[ids[k]];
-        return c.unnamed && c.degenerate && !is_degenerate_segment(*f.eval, f.loops[l].segments[k], kSameVertex * d_);
-      };
+      auto collapsed = [&](int k) { return gap_collapsed[static_cast<size_t>(ids[k].index)]; };
       auto corner = [&](int k) {  // the 3D point where segment k starts
         const Eigen::Vector2d uv = segment_start(f.loops[l].segments[k]);
         return f.eval->point(uv.x(), uv.y());
       };
       int first = 0;
-      while (first < n && gap_collapsed(first)) ++first;
+      while (first < n && collapsed(first)) ++first;
       if (first == n) continue;  // a tiny loop's segments are never gap closures
       Eigen::Vector3d run_start = corner((first + 1) % n);
       for (int i = 1; i <= n; ++i) {
         const int k = (first + i) % n;
-        if (!gap_collapsed(k)) {
-          run_start = corner((k + 1) % n);
-          continue;
-        }
-        if ((corner((k + 1) % n) - run_start).norm() > 0.5 * d_) {
+        const Eigen::Vector3d end = corner((k + 1) % n);
+        if (!collapsed(k)) {
+          run_start = end;
+        } else if ((end - run_start).norm() > 0.5 * d_) {
           curves_[ids[k]].degenerate = false;
-          run_start = corner((k + 1) % n);
+          run_start = end;
         }
       }
     }
