@@ -50,7 +50,7 @@ struct CnbWriteReport {
   int periodic_meshes = 0;                    // traversal-coded meshes whose vertices a period predicts
   // Decoded payload bytes by what they hold: control point and vertex residuals, trim point residuals,
   // knots, weights (tables and indices), float64 values (transforms, header, raw knots, weight tables),
-  // and the rest (structure, counts, names, indices).
+  // and the rest (structure, counts, names, indices, mesh symbols and ranks).
   size_t point_bytes = 0, trim_bytes = 0, knot_bytes = 0, weight_bytes = 0, float_bytes = 0, other_bytes = 0;
 };
 

@@ -236,7 +236,14 @@ std::string encode(const Scene& scene, const CnbOptions& options, const Encoding
   ByteWriter payload = header;
   payload.append(encoder.out);
   for (uint8_t context : payload.contexts()) {
-    const int field = context / 2;
+    // Past the fields' own contexts: a float64's 8, then (version 4 on) the mesh symbols' and the vertex
+    // axes' (cnb_stream.hpp).
+    const bool mesh_point_axis =
+        context == axis_context(Field::mesh_point, 1) || context == axis_context(Field::mesh_point, 2);
+    const int field = context < 2 * field_count ? context / 2
+                      : mesh_point_axis         ? static_cast<int>(Field::mesh_point)
+                      : context >= symbol_context(0) ? static_cast<int>(Field::symbol)
+                                                     : field_count;
     if (field >= field_count)
       r.float_bytes++;
     else if (field == static_cast<int>(Field::point) || field == static_cast<int>(Field::mesh_point))
