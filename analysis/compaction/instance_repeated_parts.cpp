@@ -170,8 +170,38 @@ bool same_point_sets(const FaceGeometry& a, const FaceGeometry& b, const Eigen::
   return true;
 }
 
+// Whether every face of part `b` is a face of part `a` (equal keys) with the same key, moved by `motion`
+// within `tolerance`.
+bool lands_on(const Part& a, const Part& b, const Eigen::Affine3d& motion, double tolerance) {
+  std::vector<bool> used(a.geometry.size(), false);
+  for (const auto& face : b.geometry) {
+    bool matched = false;
+    for (size_t i = 0; i < a.geometry.size() && !matched; ++i)
+      if (!used[i] && a.geometry[i].key == face.key && same_point_sets(a.geometry[i], face, motion, tolerance))
+        used[i] = matched = true;
+    if (!matched) return false;
+  }
+  return true;
+}
+
+// `motion` with every entry rounded to `digits` decimals, as a writer's exact numbers read them back
+// (n / 10^digits).
+Eigen::Affine3d rounded(const Eigen::Affine3d& motion, int digits) {
+  const double scale = std::pow(10.0, static_cast<double>(digits));
+  Eigen::Affine3d r = motion;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) r.linear()(i, j) = std::round(motion.linear()(i, j) * scale) / scale;
+    r.translation()(i) = std::round(motion.translation()(i) * scale) / scale;
+  }
+  return r;
+}
+
 // The motion taking part `a` onto part `b` (equal keys) within `tolerance`: estimated from the faces'
-// anchors in sorted order, then every face of `b` must be a face of `a` with the same key, moved.
+// anchors in sorted order, then every face of `b` must be a face of `a` with the same key, moved. Least
+// squares leaves rounding in the motion (a quarter turn as 0.99999999999999978 and 4.4e-16, a pitch of
+// 3.81 as 3.8100000000000005), which a writer must then spell out in full (17 digits in VRML, 8 bytes in
+// .cnb: 52 of the 396 transform entries of a Phoenix MC 1,5/5-GF connector). So the motion is rounded to
+// the fewest decimals that still land every face within the same tolerance, and kept as found otherwise.
 std::optional<Eigen::Affine3d> part_motion(const Part& a, const Part& b, double tolerance) {
   std::vector<Eigen::Vector3d> from, to;
   for (size_t i = 0; i < a.geometry.size(); ++i) {
@@ -180,15 +210,9 @@ std::optional<Eigen::Affine3d> part_motion(const Part& a, const Part& b, double 
   }
   if (from.size() != to.size()) return std::nullopt;
   const auto motion = best_motion(from, to, tolerance);
-  if (!motion) return std::nullopt;
-  std::vector<bool> used(a.geometry.size(), false);
-  for (const auto& face : b.geometry) {
-    bool matched = false;
-    for (size_t i = 0; i < a.geometry.size() && !matched; ++i)
-      if (!used[i] && a.geometry[i].key == face.key && same_point_sets(a.geometry[i], face, *motion, tolerance))
-        used[i] = matched = true;
-    if (!matched) return std::nullopt;
-  }
+  if (!motion || !lands_on(a, b, *motion, tolerance)) return std::nullopt;
+  for (int digits : {0, 1, 2, 3, 4, 6, 8, 10, 12})
+    if (const Eigen::Affine3d tidy = rounded(*motion, digits); lands_on(a, b, tidy, tolerance)) return tidy;
   return motion;
 }
 

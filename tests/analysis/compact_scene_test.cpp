@@ -303,6 +303,46 @@ TEST(InstanceRepeatedParts, CopiesUnderAMotionAreFoundWhateverTheirParametrisati
   EXPECT_LT((p - surface_point(original_side.surface, original_side.surface.u_end(), 0.5)).norm(), 1e-12);
 }
 
+// The entry times 10^digits is a whole number, as a writer's exact decimals read it back.
+bool decimal_with(double value, int digits) {
+  const double scale = std::pow(10.0, digits);
+  return std::round(value * scale) / scale == value;
+}
+
+TEST(InstanceRepeatedParts, MotionsAreRoundedToTheFewestDecimalsThatStillLandTheCopy) {
+  SceneNode node;
+  // A quarter turn and a pitch of 3.81: least squares finds 4.4e-16 for 0 and 3.8100000000000005 for 3.81.
+  Eigen::Affine3d quarter = Eigen::Affine3d::Identity();
+  quarter.translate(Eigen::Vector3d(3.81, 0, 0)).rotate(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  // A turn of 0.3 radians: no short decimals land it within 1e-9.
+  Eigen::Affine3d turned = Eigen::Affine3d::Identity();
+  turned.translate(Eigen::Vector3d(0, 7.62, 0)).rotate(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()));
+  for (auto& s : pin(0, Eigen::Affine3d::Identity(), false)) node.shapes.push_back(s);
+  for (auto& s : pin(1, quarter, false)) node.shapes.push_back(s);
+  for (auto& s : pin(2, turned, false)) node.shapes.push_back(s);
+
+  ASSERT_EQ(instance_repeated_parts(node, 1e-9), 2);
+  ASSERT_EQ(node.children.size(), 3u);
+  const Eigen::Affine3d& q = node.children[1].transform;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_EQ(q.linear()(i, j), std::round(quarter.linear()(i, j))) << i << " " << j;
+  EXPECT_EQ(q.translation(), Eigen::Vector3d(3.81, 0, 0));
+  const Eigen::Affine3d& t = node.children[2].transform;
+  bool short_decimals = true;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) short_decimals = short_decimals && decimal_with(t.matrix()(i, j), 12);
+  EXPECT_TRUE(short_decimals);
+  EXPECT_FALSE(decimal_with(t.linear()(1, 1), 8));  // cos 0.3 needs more digits than that
+  // Each copy still lands on the part it replaces within the tolerance.
+  for (auto [child, motion, index] : {std::tuple{1, quarter, 1}, std::tuple{2, turned, 2}}) {
+    const auto& copy = std::get<TrimmedSurface>(node.children[child].shapes[0].geometry).surface;
+    const std::vector<Shape> moved_pin = pin(index, motion, false);
+    const auto& original = std::get<TrimmedSurface>(moved_pin[0].geometry).surface;
+    for (size_t k = 0; k < copy.points.size(); ++k)
+      EXPECT_LT((node.children[child].transform * copy.points[k] - original.points[k]).norm(), 1e-9) << child << " " << k;
+  }
+}
+
 TEST(CompactScene, TheCappingKeepsItsAreaAndItsLidsBecomePolygons) {
   Scene scene;
   scene.root.shapes.push_back({"", test::trimmed_square(2, 0.4, 0.1), std::nullopt});
