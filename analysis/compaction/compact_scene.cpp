@@ -7,7 +7,7 @@
 
 #include "analysis/compaction/instance_repeated_parts.hpp"
 #include "analysis/compaction/join_straight_trim_runs.hpp"
-#include "analysis/knots/knot_removal.hpp"
+#include "core/knot_removal.hpp"
 #include "analysis/compaction/planar_face_polygons.hpp"
 #include "analysis/mesh/weld_polygon_meshes.hpp"
 #include "analysis/knots/whole_number_knots.hpp"

@@ -6,7 +6,7 @@
 #include <tuple>
 #include <stdexcept>
 
-#include "analysis/knots/knot_removal.hpp"
+#include "core/knot_removal.hpp"
 #include "core/knot_vector.hpp"
 #include "core/world_scale.hpp"
 

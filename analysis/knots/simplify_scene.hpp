@@ -1,5 +1,5 @@
 #pragma once
-// Fewer control points for the same shape: knot removal (analysis/knots/knot_removal) on every surface and
+// Fewer control points for the same shape: knot removal (core/knot_removal) on every surface and
 // 3D curve of a scene, each moving by at most a given distance in world coordinates.
 // Trimming loops are left as they are: they live in the surface's (u,v) domain, which knot removal
 // keeps, so they stay valid, and their 3D images move with the surface, by at most the same distance.

@@ -8,7 +8,7 @@
 #include "analysis/compaction/compact_scene.hpp"
 #include "analysis/compaction/instance_repeated_parts.hpp"
 #include "analysis/compaction/join_straight_trim_runs.hpp"
-#include "analysis/knots/knot_removal.hpp"
+#include "core/knot_removal.hpp"
 #include "analysis/compaction/merge_convex_polygons.hpp"
 #include "analysis/compaction/planar_face_polygons.hpp"
 #include "analysis/measure/trimmed_surface_area.hpp"

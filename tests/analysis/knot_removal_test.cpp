@@ -1,7 +1,7 @@
 // Knot removal on curves and surfaces, polynomial and rational, against closed forms: what knot
 // refinement added comes back off exactly, a perturbed net stays within the tolerance, and a net whose
 // knots are all needed is returned as it was.
-#include "analysis/knots/knot_removal.hpp"
+#include "core/knot_removal.hpp"
 
 #include <gtest/gtest.h>
 

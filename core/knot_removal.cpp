@@ -1,4 +1,4 @@
-#include "analysis/knots/knot_removal.hpp"
+#include "core/knot_removal.hpp"
 
 #include <algorithm>
 #include <cmath>
