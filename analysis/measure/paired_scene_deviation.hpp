@@ -1,10 +1,12 @@
 #pragma once
 // How far a lossy re-encoding of a scene (e.g. a .cnb read back) moved it: two scenes of the same
-// structure (same node tree, shapes, loops, segments, knots) compared point by point at the same
+// structure (same node tree, shapes, loops, segments, knots; a trimming curve may have other knots over
+// the same domain, as where the .cnb writer removed spare ones) compared point by point at the same
 // parameters, in world coordinates:
 //   surfaces   - both surfaces on a grid of the domain (samples_per_span per knot span in u and v,
 //                at most 256 a direction, knot lines included);
-//   boundaries - every trimming segment sampled at the same parameters, each mapped by its own surface;
+//   boundaries - every trimming segment sampled at the same parameters (per span of the original's), each
+//                mapped by its own surface;
 //   curves     - 3D curves sampled the same way; meshes - corresponding vertices.
 // A measurement (attained distances at samples), not a bound.
 #include "core/scene.hpp"

@@ -33,8 +33,9 @@ struct CnbWriteReport {
   double point_step = 0;   // q: the grid of control points and mesh vertices (scene units)
   double point_bound = 0;  // largest world move of a control point or vertex: q·√3/2·(largest world scale)
   // Largest world move, over faces, caused by the trims' own grid plus (faces with quantised weights)
-  // the weights' rounding.
+  // the weights' rounding, plus (faces whose trims lost spare knots) the slack the knots took.
   double trim_bound = 0;
+  long trim_knots_removed = 0;  // spare knots of trimming curves removed (cnb_quantisation.hpp)
   double mesh_bound = 0;  // options.mesh_deviation when the scene holds a mesh, else 0
   double deviation_bound() const { return point_bound + std::max(trim_bound, mesh_bound); }
   size_t payload_bytes = 0;     // decoded payload

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/knot_removal.hpp"
 #include "core/world_scale.hpp"
 #include "formats/cnb/cnb_numbers.hpp"
 
@@ -71,6 +72,27 @@ int trim_step_exponent_keeping_loops(const std::vector<TrimLoop>& loops, int exp
 
 double trim_bound(const NurbsSurface& surface, int exponent, double world_scale) {
   return 2.0 * surface_derivative_bound(surface) * std::ldexp(1.0, exponent) * world_scale;
+}
+
+double spare_trim_tolerance(const NurbsSurface& surface, double slack, double world_scale) {
+  const double per_uv = std::sqrt(2.0) * surface_derivative_bound(surface) * world_scale;  // √2·L·scale
+  if (!(slack > 0) || !(per_uv > 0) || !std::isfinite(per_uv)) return 0.0;
+  return slack / per_uv;
+}
+
+std::vector<TrimLoop> trims_without_spare_knots(const std::vector<TrimLoop>& loops, double uv_tolerance,
+                                                long* removed) {
+  std::vector<TrimLoop> result = loops;
+  if (!(uv_tolerance > 0)) return result;
+  for (auto& loop : result)
+    for (auto& segment : loop.segments)
+      if (auto* curve = std::get_if<NurbsCurve>(&segment);
+          curve && curve->knots.size() > 2 * static_cast<size_t>(curve->order)) {
+        int count = 0;
+        *curve = remove_knots(*curve, uv_tolerance, &count);
+        if (removed) *removed += count;
+      }
+  return result;
 }
 
 namespace {

@@ -48,6 +48,18 @@ int trim_step_exponent_keeping_loops(const std::vector<TrimLoop>& loops, int exp
 // The world bound 2·L·2^e·scale of that choice.
 double trim_bound(const NurbsSurface& surface, int exponent, double world_scale);
 
+// Trimming curves' spare knots. The grid 2^e, a power of two, leaves part of the trims' world budget
+// unused: slack = budget - 2·L·2^e·scale. In it the NURBS trimming curves lose the knots their shape does
+// not need (core/knot_removal): each curve moves by at most t in (u,v), so its image on the surface by at
+// most L·(|Δu| + |Δv|) <= √2·L·t, and t = slack / (√2·L·scale) keeps that within the slack. Pcurves that a
+// kernel approximated carry many knots, none a short decimal (a Fastron 77A inductor's windings: 670
+// knots written as float64s at D = 0.01 mm). Ends stay where they were (interior knots only), so loops stay
+// closed; the writer then takes the grid again for the new loops, never coarser than before.
+// `removed` (may be null) receives the number of knots removed. Returns the loops as they are for t <= 0.
+double spare_trim_tolerance(const NurbsSurface& surface, double slack, double world_scale);
+std::vector<TrimLoop> trims_without_spare_knots(const std::vector<TrimLoop>& loops, double uv_tolerance,
+                                                long* removed = nullptr);
+
 // Weights: kept exactly, except on a rational surface with more than `exact_weight_limit` distinct
 // weights (a table would cost 8 bytes each). There each weight is rounded to 2^(n·h), a relative error
 // of at most ε = 2^(h/2) - 1. With the control points fixed, S' - S = Σ N_i (w'_i - w_i)(P_i - S) /
