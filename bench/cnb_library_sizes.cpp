@@ -72,9 +72,9 @@ int main(int argc, char** argv) {
         bound = coded.written.deviation_bound();
         if (detail) {
           const CnbWriteReport& w = coded.written;
-          std::fprintf(stderr, "%s at %g: payload %zu (points %zu, trims %zu, knots %zu, weights %zu, float64 %zu, other %zu), file %zu\n",
+          std::fprintf(stderr, "%s at %g: payload %zu (points %zu, trims %zu, knots %zu, weights %zu, float64 %zu, other %zu), file %zu; %ld spare trim knots removed\n",
                        part.c_str(), d, w.payload_bytes, w.point_bytes, w.trim_bytes, w.knot_bytes, w.weight_bytes,
-                       w.float_bytes, w.other_bytes, w.file_bytes);
+                       w.float_bytes, w.other_bytes, w.file_bytes, w.trim_knots_removed);
           const CodingChoiceReport& c = coded.choice;
           std::fprintf(stderr, "%s at %g: candidates as is %zu, per body %zu, all meshed %zu, exact meshed %zu, merged meshes %zu; %d of %d bodies meshed\n",
                        part.c_str(), d, c.as_is_bytes, c.per_body_bytes, c.all_meshed_bytes, c.exact_meshed_bytes,

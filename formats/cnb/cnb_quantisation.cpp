@@ -74,6 +74,10 @@ double trim_bound(const NurbsSurface& surface, int exponent, double world_scale)
   return 2.0 * surface_derivative_bound(surface) * std::ldexp(1.0, exponent) * world_scale;
 }
 
+bool has_spare_knot_candidates(const NurbsCurve& curve) {
+  return curve.knots.size() > 2 * static_cast<size_t>(curve.order);
+}
+
 double spare_trim_tolerance(const NurbsSurface& surface, double slack, double world_scale) {
   const double per_uv = std::sqrt(2.0) * surface_derivative_bound(surface) * world_scale;  // √2·L·scale
   if (!(slack > 0) || !(per_uv > 0) || !std::isfinite(per_uv)) return 0.0;
@@ -86,8 +90,7 @@ std::vector<TrimLoop> trims_without_spare_knots(const std::vector<TrimLoop>& loo
   if (!(uv_tolerance > 0)) return result;
   for (auto& loop : result)
     for (auto& segment : loop.segments)
-      if (auto* curve = std::get_if<NurbsCurve>(&segment);
-          curve && curve->knots.size() > 2 * static_cast<size_t>(curve->order)) {
+      if (auto* curve = std::get_if<NurbsCurve>(&segment); curve && has_spare_knot_candidates(*curve)) {
         int count = 0;
         *curve = remove_knots(*curve, uv_tolerance, &count);
         if (removed) *removed += count;

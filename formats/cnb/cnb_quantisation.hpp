@@ -55,7 +55,9 @@ double trim_bound(const NurbsSurface& surface, int exponent, double world_scale)
 // kernel approximated carry many knots, none a short decimal (a Fastron 77A inductor's windings: 670
 // knots written as float64s at D = 0.01 mm). Ends stay where they were (interior knots only), so loops stay
 // closed; the writer then takes the grid again for the new loops, never coarser than before.
+// has_spare_knot_candidates: the curve has interior knots.
 // `removed` (may be null) receives the number of knots removed. Returns the loops as they are for t <= 0.
+bool has_spare_knot_candidates(const NurbsCurve& curve);
 double spare_trim_tolerance(const NurbsSurface& surface, double slack, double world_scale);
 std::vector<TrimLoop> trims_without_spare_knots(const std::vector<TrimLoop>& loops, double uv_tolerance,
                                                 long* removed = nullptr);
