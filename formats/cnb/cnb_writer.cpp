@@ -42,23 +42,20 @@ struct TrimCoding {
   long knots_removed = 0;
 };
 
-// The trims of a face, their grid taken from `grid_fraction` of their world budget `trim_budget` and their
-// spare knots removed within what the grid leaves (cnb_quantisation.hpp); `share_exponent(fraction)` is the
-// grid that fraction of the budget allows, before the loops' own limit.
+// The (non-empty) trims of a face, their grid taken from `grid_fraction` of their world budget `trim_budget`
+// and their spare knots removed within what the grid leaves (cnb_quantisation.hpp); `share_exponent(fraction)`
+// is the grid that fraction of the budget allows, before the loops' own limit. No loops when no knot went.
 TrimCoding trims_within(const std::vector<TrimLoop>& loops, const NurbsSurface& surface, double world_scale,
                         double trim_budget, double grid_fraction, const std::function<int(double)>& share_exponent) {
   TrimCoding c;
-  c.exponent = trim_step_exponent_keeping_loops(loops, share_exponent(grid_fraction));
-  const double grid = loops.empty() ? 0.0 : trim_bound(surface, c.exponent, world_scale);
-  const double spare = loops.empty() ? 0.0 : trim_budget - grid;
+  const int share = share_exponent(grid_fraction);
+  c.exponent = trim_step_exponent_keeping_loops(loops, share);
+  const double spare = trim_budget - trim_bound(surface, c.exponent, world_scale);
   std::vector<TrimLoop> simplified =
       trims_without_spare_knots(loops, spare_trim_tolerance(surface, spare, world_scale), &c.knots_removed);
-  if (c.knots_removed == 0) {
-    c.bound = grid;
-    return c;
-  }
+  if (c.knots_removed == 0) return c;  // not taken: the caller keeps the loops as they are
   // Never a coarser grid than before: the spare was measured against the first one.
-  c.exponent = std::min(c.exponent, trim_step_exponent_keeping_loops(simplified, share_exponent(grid_fraction)));
+  c.exponent = std::min(c.exponent, trim_step_exponent_keeping_loops(simplified, share));
   c.bound = trim_bound(surface, c.exponent, world_scale) + spare;
   c.loops = std::move(simplified);
   return c;
@@ -85,7 +82,7 @@ double trim_payload_cost(const std::vector<TrimLoop>& loops, int exponent, const
   after.version = state.version;
   write_trim_loops(scratch, loops, exponent, after);
   double cost = 0;
-  for (uint8_t context : scratch.contexts()) cost += context >= 2 * field_count && context < 2 * field_count + 8 ? 1.0 : 0.5;
+  for (uint8_t context : scratch.contexts()) cost += float64_context(context) ? 1.0 : 0.5;
   return cost;
 }
 
@@ -144,12 +141,13 @@ struct SceneEncoder {
       // leaves or within half the budget and a grid from the other half; or as they are, where their knots
       // are cached (a Fastron LACC at 0.01 mm: 4,101 -> 3,480 bytes).
       if (st.trim_knot_removal && loops_have_spare_knot_candidates(t->loops)) {
-        double cheapest = trim_payload_cost(t->loops, trims.exponent, st);
+        std::optional<double> cheapest;  // the loops as they are, costed once a candidate needs it
         for (double grid_fraction : {1.0, 0.5}) {
           TrimCoding other = trims_within(t->loops, t->surface, world_scale, trim_budget, grid_fraction, share_exponent);
           if (!other.loops) continue;
+          if (!cheapest) cheapest = trim_payload_cost(t->loops, trims.exponent, st);
           const double cost = trim_payload_cost(*other.loops, other.exponent, st);
-          if (cost < cheapest) cheapest = cost, trims = std::move(other);
+          if (cost < *cheapest) cheapest = cost, trims = std::move(other);
         }
       }
       if (counted) report.trim_knots_removed += trims.knots_removed;
@@ -315,14 +313,14 @@ std::string encode(const Scene& scene, const CnbOptions& options, const Encoding
   ByteWriter payload = header;
   payload.append(encoder.out);
   for (uint8_t context : payload.contexts()) {
-    // Past the fields' own contexts: a float64's 8, then (version 4 on) the mesh symbols' and the vertex
-    // axes' (cnb_stream.hpp).
+    // Past the fields' own contexts and a float64's 8 come (version 4 on) the mesh symbols' and the
+    // vertex axes' (cnb_stream.hpp): ranks count with the symbols, differences with the points.
     const bool mesh_point_axis =
         context == axis_context(Field::mesh_point, 1) || context == axis_context(Field::mesh_point, 2);
-    const int field = context < 2 * field_count ? context / 2
-                      : mesh_point_axis         ? static_cast<int>(Field::mesh_point)
-                      : context >= symbol_context(0) ? static_cast<int>(Field::symbol)
-                                                     : field_count;
+    const int field = float64_context(context)     ? field_count
+                      : context < 2 * field_count ? context / 2
+                      : mesh_point_axis           ? static_cast<int>(Field::mesh_point)
+                                                  : static_cast<int>(Field::symbol);
     if (field >= field_count)
       r.float_bytes++;
     else if (field == static_cast<int>(Field::point) || field == static_cast<int>(Field::mesh_point))
