@@ -4,7 +4,8 @@
 //                                       model, the level nearest the share of 0 bits it saw in the files'
 //                                       payloads ((zeros + ½) / (bits + 1)); "." where it saw fewer than 2
 //   cnb_coder_prior cost FILE.cnb...    for each file, its payload arithmetic-coded with every model at ½
-//                                       (versions 1 to 3) and from the prior (version 4), in bytes
+//                                       (coder 2), from the prior (coder 3, version 4 on) and from the
+//                                       prior with models of two rates (coder 4, version 7 on), in bytes
 //
 // bench/cnb_coder_prior.sh runs `table` on the training files. The payloads are read back with their
 // contexts by read_cnb_payload, so a file of any version trains alike.
@@ -59,16 +60,21 @@ int table(int count, char** paths) {
 }
 
 int cost(int count, char** paths) {
-  size_t uniform_total = 0, prior_total = 0;
+  size_t uniform_total = 0, prior_total = 0, two_rates_total = 0;
   for (int i = 0; i < count; ++i) {
     const CnbPayload p = payload_of(paths[i]);
-    const size_t uniform = cnb::arithmetic_encode(p.bytes, p.contexts, cnb::uniform_models()).size();
-    const size_t prior = cnb::arithmetic_encode(p.bytes, p.contexts, cnb::coder_prior_models()).size();
-    std::printf("%s\t%zu\t%zu\t%zu\n", paths[i], p.bytes.size(), uniform, prior);
+    const auto coded = [&](const cnb::ContextModels& start, cnb::Adaptation adaptation) {
+      return cnb::arithmetic_encode(p.bytes, p.contexts, start, adaptation).size();
+    };
+    const size_t uniform = coded(cnb::uniform_models(), cnb::Adaptation::one_rate);
+    const size_t prior = coded(cnb::coder_prior_models(), cnb::Adaptation::one_rate);
+    const size_t two_rates = coded(cnb::coder_prior_models(), cnb::Adaptation::two_rates);
+    std::printf("%s\t%zu\t%zu\t%zu\t%zu\n", paths[i], p.bytes.size(), uniform, prior, two_rates);
     uniform_total += uniform;
     prior_total += prior;
+    two_rates_total += two_rates;
   }
-  std::printf("all\t\t%zu\t%zu\n", uniform_total, prior_total);
+  std::printf("all\t\t%zu\t%zu\t%zu\n", uniform_total, prior_total, two_rates_total);
   return 0;
 }
 

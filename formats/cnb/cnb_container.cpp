@@ -14,9 +14,28 @@ namespace cadnurbs::cnb {
 namespace {
 
 constexpr char magic[4] = {'\x89', 'C', 'N', 'B'};
-enum CoderId : uint8_t { deflate_id = 1, arithmetic_id = 2, arithmetic_prior_id = 3 };
+constexpr uint8_t deflate_id = 1;
 // Raw deflate cannot expand more than 1032:1.
 constexpr size_t deflate_expansion_limit = 1032;
+
+// The arithmetic coders: the header's coder byte, the first version that knows it, where its models
+// start and how they adapt.
+struct ArithmeticCoder {
+  CnbOptions::Coder coder;
+  uint8_t id;
+  uint8_t first_version;
+  const ContextModels& (*start)();
+  Adaptation adaptation;
+};
+const ContextModels& uniform_start() {
+  static const ContextModels models = uniform_models();
+  return models;
+}
+constexpr ArithmeticCoder arithmetic_coders[] = {
+    {CnbOptions::Coder::arithmetic, 2, 1, uniform_start, Adaptation::one_rate},
+    {CnbOptions::Coder::arithmetic_prior, 3, 4, coder_prior_models, Adaptation::one_rate},
+    {CnbOptions::Coder::arithmetic_two_rates, 4, 7, coder_prior_models, Adaptation::two_rates},
+};
 
 void put_u32(std::string& s, uint32_t v) {
   for (int i = 0; i < 4; ++i) s.push_back(static_cast<char>(v >> (8 * i)));
@@ -64,8 +83,8 @@ class OwnedBufferSource : public ByteSource {
 
 class OwnedArithmeticSource : public ByteSource {
  public:
-  OwnedArithmeticSource(std::string coded, ContextModels start)
-      : coded_(std::move(coded)), decoder_(coded_.data(), coded_.size(), std::move(start)) {}
+  OwnedArithmeticSource(std::string coded, const ArithmeticCoder& coder)
+      : coded_(std::move(coded)), decoder_(coded_.data(), coded_.size(), coder.start(), coder.adaptation) {}
   uint8_t next(int context) override { return decoder_.next(context); }
 
  private:
@@ -116,15 +135,15 @@ std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteRe
     uint8_t id;
     std::string coded;
   };
-  Candidate candidates[] = {{CnbOptions::Coder::deflate, deflate_id, {}},
-                            {CnbOptions::Coder::arithmetic, arithmetic_id, {}},
-                            {CnbOptions::Coder::arithmetic_prior, arithmetic_prior_id, {}}};
+  std::vector<Candidate> candidates = {{CnbOptions::Coder::deflate, deflate_id, {}}};
+  for (const ArithmeticCoder& a : arithmetic_coders) candidates.push_back({a.coder, a.id, {}});
   const Candidate* chosen = nullptr;
-  for (Candidate& c : candidates) {
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    Candidate& c = candidates[i];
     if (choice != CnbOptions::Coder::smallest && choice != c.coder) continue;
-    c.coded = c.id == deflate_id ? deflate_raw(payload.bytes())
-                                 : arithmetic_encode(payload.bytes(), payload.contexts(),
-                                                     c.id == arithmetic_id ? uniform_models() : coder_prior_models());
+    c.coded = i == 0 ? deflate_raw(payload.bytes())
+                     : arithmetic_encode(payload.bytes(), payload.contexts(), arithmetic_coders[i - 1].start(),
+                                         arithmetic_coders[i - 1].adaptation);
     if (!chosen || c.coded.size() < chosen->coded.size()) chosen = &c;
   }
   const std::string& coded = chosen->coded;
@@ -144,6 +163,7 @@ std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteRe
     report->deflate_bytes = candidates[0].coded.size();
     report->arithmetic_bytes = candidates[1].coded.size();
     report->arithmetic_prior_bytes = candidates[2].coded.size();
+    report->arithmetic_two_rates_bytes = candidates[3].coded.size();
     report->file_bytes = file.size();
   }
   return file;
@@ -209,13 +229,14 @@ OpenedPayload open_payload(const std::string& file, const std::string& name) {
   if (id == deflate_id) {
     if (size > deflate_expansion_limit * coded + 64) refuse(name, 6, "a payload of " + std::to_string(size) + " bytes cannot come from " + std::to_string(coded) + " deflated bytes");
     opened.source = std::make_unique<OwnedBufferSource>(inflate_raw(file, start, size, name));
-  } else if (id == arithmetic_id || (id == arithmetic_prior_id && version >= 4)) {
-    if (size > arithmetic_expansion_limit * coded + 64) refuse(name, 6, "a payload of " + std::to_string(size) + " bytes cannot come from " + std::to_string(coded) + " coded bytes");
-    opened.source = std::make_unique<OwnedArithmeticSource>(
-        file.substr(start), id == arithmetic_id ? uniform_models() : coder_prior_models());
-    opened.arithmetic = true;
   } else {
-    refuse(name, 5, "unknown entropy coder " + std::to_string(id));
+    const ArithmeticCoder* coder = nullptr;
+    for (const ArithmeticCoder& a : arithmetic_coders)
+      if (a.id == id && version >= a.first_version) coder = &a;
+    if (!coder) refuse(name, 5, "unknown entropy coder " + std::to_string(id));
+    if (size > arithmetic_expansion_limit(coder->adaptation) * coded + 64) refuse(name, 6, "a payload of " + std::to_string(size) + " bytes cannot come from " + std::to_string(coded) + " coded bytes");
+    opened.source = std::make_unique<OwnedArithmeticSource>(file.substr(start), *coder);
+    opened.arithmetic = true;
   }
   return opened;
 }

@@ -24,8 +24,9 @@ struct CnbOptions {
   // itself (converters/cnb_coding).
   double quantisation_scale = 1.0;
   // The entropy stage: the smallest of deflate, the adaptive arithmetic coder with every model starting at
-  // ½, and the same coder starting from the coder prior (cnb_coder_prior.hpp), or one of them.
-  enum class Coder { smallest, deflate, arithmetic, arithmetic_prior } coder = Coder::smallest;
+  // ½, the same coder starting from the coder prior (cnb_coder_prior.hpp), and the coder whose models mix
+  // two rates of adaptation, from the prior (adaptive_arithmetic_coder.hpp); or one of them.
+  enum class Coder { smallest, deflate, arithmetic, arithmetic_prior, arithmetic_two_rates } coder = Coder::smallest;
 };
 
 // What the writer chose and what it guarantees.
@@ -42,6 +43,7 @@ struct CnbWriteReport {
   size_t deflate_bytes = 0;     // the payload deflated (0 when not tried)
   size_t arithmetic_bytes = 0;  // the payload arithmetic-coded from ½ (0 when not tried)
   size_t arithmetic_prior_bytes = 0;  // the payload arithmetic-coded from the coder prior (0 when not tried)
+  size_t arithmetic_two_rates_bytes = 0;  // the same with models of two rates (0 when not tried)
   size_t file_bytes = 0;
   int parallelogram_nets = 0, row_nets = 0;  // which predictor each surface's net took
   int quantised_weight_nets = 0;              // surfaces whose weights were rounded (not kept exactly)

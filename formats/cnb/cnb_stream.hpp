@@ -21,7 +21,7 @@ enum class Field : uint8_t {
 };
 // The format version writers write (docs/cnb.md); readers pass on the file's, since the contexts
 // bytes take depend on it.
-constexpr uint8_t format_version = 6;
+constexpr uint8_t format_version = 7;
 
 constexpr int field_count = 14;
 // Contexts: 2 per field (first / continuation byte of a varint), 8 for the bytes of a float64, then (format

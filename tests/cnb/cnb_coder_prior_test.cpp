@@ -25,7 +25,7 @@ std::string written(const Scene& scene, double deviation, CnbOptions::Coder code
   return write_cnb(scene, options, report);
 }
 
-constexpr uint8_t deflate_id = 1, arithmetic_id = 2, arithmetic_prior_id = 3;  // the header's coder byte
+constexpr uint8_t deflate_id = 1, arithmetic_id = 2, arithmetic_prior_id = 3, two_rates_id = 4;  // the header's coder byte
 
 // The four cappings' NURBS at D = 1 mm are payloads of 300 to 3,400 bytes: each codes smaller from the
 // prior than from ½, and all together by at least 3% (measured 1,516 -> 1,457 bytes).
@@ -53,8 +53,9 @@ void break_weight_products(SceneNode& node) {
   for (auto& child : node.children) break_weight_products(child);
 }
 
-// The writer keeps the smallest of the three coders: the prior for a capping's NURBS at 1 mm, deflate for
-// the moulded capping's NURBS at 1 mm with its weights rounded (whose repeated runs of bytes deflate finds).
+// The writer keeps the smallest of the four coders: the prior with two rates (coder 4, version 7) for a
+// capping's NURBS at 1 mm, deflate for the moulded capping's NURBS at 1 mm with its weights rounded (whose
+// repeated runs of bytes deflate finds).
 TEST(CnbCoderPrior, WriterKeepsTheSmallestCoder) {
   const Scene nurbs = read_vrml(sample("capping-90.x3dv"));
   Scene moulded = read_vrml(sample("capping-moulded.x3dv"));
@@ -63,14 +64,15 @@ TEST(CnbCoderPrior, WriterKeepsTheSmallestCoder) {
     const Scene* scene;
     double deviation;
     uint8_t expected_coder;
-  } cases[] = {{&nurbs, 1.0, arithmetic_prior_id}, {&moulded, 1.0, deflate_id}};
+  } cases[] = {{&nurbs, 1.0, two_rates_id}, {&moulded, 1.0, deflate_id}};
   for (const auto& [scene, deviation, expected_coder] : cases) {
     CnbWriteReport report;
     const std::string smallest = written(*scene, deviation, CnbOptions::Coder::smallest, &report);
     std::cout << "deflated " << report.deflate_bytes << ", coded from 1/2 " << report.arithmetic_bytes
               << ", from the prior " << report.arithmetic_prior_bytes << "\n";
     size_t forced = SIZE_MAX;
-    for (auto coder : {CnbOptions::Coder::deflate, CnbOptions::Coder::arithmetic, CnbOptions::Coder::arithmetic_prior})
+    for (auto coder : {CnbOptions::Coder::deflate, CnbOptions::Coder::arithmetic, CnbOptions::Coder::arithmetic_prior,
+                       CnbOptions::Coder::arithmetic_two_rates})
       forced = std::min(forced, written(*scene, deviation, coder).size());
     EXPECT_EQ(smallest.size(), forced);
     EXPECT_EQ(static_cast<uint8_t>(smallest[5]), expected_coder);

@@ -59,7 +59,7 @@ TEST(CnbDamage, EveryFlippedByteIsRefused) {
     std::string expected;
     if (at < 4) expected = name + ": byte " + std::to_string(at) + ": not a .cnb file (the magic number is \\x89CNB)";
     else if (at == 4) expected = name + ": byte 4: version " + std::to_string(cnb::format_version ^ 0x24) +
-                            " is not one this reader knows (1 to 6)";
+                            " is not one this reader knows (1 to 7)";
     else expected = crc_message;
     ASSERT_EQ(error_of(damaged), expected) << "byte " << at;
   }

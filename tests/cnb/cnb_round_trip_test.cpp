@@ -286,7 +286,8 @@ TEST(CnbRoundTrip, MouldedCappingWeightsWrittenAsFactors) {
 TEST(CnbCorpus, EveryEntropyCoderDecodesToTheSameScene) {
   const Scene& scene = corpus_scene();
   std::vector<RoundTrip> trips;
-  for (auto coder : {CnbOptions::Coder::deflate, CnbOptions::Coder::arithmetic, CnbOptions::Coder::arithmetic_prior})
+  for (auto coder : {CnbOptions::Coder::deflate, CnbOptions::Coder::arithmetic, CnbOptions::Coder::arithmetic_prior,
+                     CnbOptions::Coder::arithmetic_two_rates})
     trips.push_back(round_trip(scene, 0.01, coder));
   int same_payloads = 0;
   for (size_t i = 0; i < trips.size(); ++i) {
