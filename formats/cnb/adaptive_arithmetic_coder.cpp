@@ -7,8 +7,6 @@ namespace cadnurbs::cnb {
 
 namespace {
 
-using Model = ArithmeticDecoder::Model;
-
 constexpr uint32_t top = 1u << 24;
 
 // one_rate: a probability moves 1/(n+2) of the way towards each bit it sees, n the bits seen so far,
@@ -26,12 +24,12 @@ constexpr int bits = 16, one = 1 << bits, fastest_limit = 4, slowest = 40, least
 int probability_bits(Adaptation a) { return a == Adaptation::one_rate ? one_rate::bits : two_rates::bits; }
 
 // The probability of a 0, of 2^probability_bits.
-uint32_t probability(const Model& m, Adaptation a) {
+uint32_t probability(const WorkingModel& m, Adaptation a) {
   if (a == Adaptation::one_rate) return m.fast;
   return static_cast<uint32_t>(std::clamp((m.fast + m.slow) >> 1, two_rates::least, two_rates::one - two_rates::least));
 }
 
-void adapt(Model& m, bool bit, Adaptation a) {
+void adapt(WorkingModel& m, bool bit, Adaptation a) {
   const int n = m.seen + 2;
   if (a == Adaptation::one_rate) {
     using namespace one_rate;
@@ -49,8 +47,8 @@ void adapt(Model& m, bool bit, Adaptation a) {
   if (n < slowest) ++m.seen;
 }
 
-std::vector<Model> working_models(const ContextModels& start, Adaptation a) {
-  std::vector<Model> models(start.size());
+std::vector<WorkingModel> working_models(const ContextModels& start, Adaptation a) {
+  std::vector<WorkingModel> models(start.size());
   const int scale = a == Adaptation::one_rate ? 0 : two_rates::bits - one_rate::bits;
   for (size_t i = 0; i < start.size(); ++i) {
     const auto p = static_cast<uint16_t>(start[i].p << scale);
@@ -62,7 +60,7 @@ std::vector<Model> working_models(const ContextModels& start, Adaptation a) {
 class Encoder {
  public:
   explicit Encoder(Adaptation adaptation) : adaptation_(adaptation), bits_(probability_bits(adaptation)) {}
-  void bit(Model& m, bool b) {
+  void bit(WorkingModel& m, bool b) {
     const uint32_t bound = (range_ >> bits_) * probability(m, adaptation_);
     if (!b) range_ = bound;
     else { low_ += bound; range_ -= bound; }
@@ -104,10 +102,10 @@ ContextModels uniform_models() { return ContextModels(static_cast<size_t>(contex
 
 std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_t>& contexts,
                               const ContextModels& start, Adaptation adaptation) {
-  std::vector<Model> models = working_models(start, adaptation);
+  std::vector<WorkingModel> models = working_models(start, adaptation);
   Encoder encoder(adaptation);
   for (size_t i = 0; i < bytes.size(); ++i) {
-    Model* tree = &models[static_cast<size_t>(contexts[i]) * 256];
+    WorkingModel* tree = &models[static_cast<size_t>(contexts[i]) * 256];
     const uint8_t value = static_cast<uint8_t>(bytes[i]);
     unsigned node = 1;
     for (int b = 7; b >= 0; --b) {
@@ -127,7 +125,7 @@ ArithmeticDecoder::ArithmeticDecoder(const char* coded, size_t size, const Conte
 
 uint8_t ArithmeticDecoder::input() { return position_ < size_ ? static_cast<uint8_t>(coded_[position_++]) : 0; }
 
-bool ArithmeticDecoder::bit(Model& m) {
+bool ArithmeticDecoder::bit(WorkingModel& m) {
   const uint32_t bound = (range_ >> probability_bits(adaptation_)) * probability(m, adaptation_);
   bool b;
   if (code_ < bound) { range_ = bound; b = false; }
@@ -138,7 +136,7 @@ bool ArithmeticDecoder::bit(Model& m) {
 }
 
 uint8_t ArithmeticDecoder::next(int context) {
-  Model* tree = &models_[static_cast<size_t>(context) * 256];
+  WorkingModel* tree = &models_[static_cast<size_t>(context) * 256];
   unsigned node = 1;
   for (int b = 0; b < 8; ++b) node = 2 * node + (bit(tree[node]) ? 1 : 0);
   return static_cast<uint8_t>(node - 256);

@@ -34,6 +34,13 @@ struct BitModel {
 // 2n + bit the next), context_count × 256 in all. `uniform_models()` has them all at ½ (coder 2); coder 3
 // (format version 4 on) starts from the coder prior (cnb_coder_prior.hpp).
 using ContextModels = std::vector<BitModel>;
+
+// A model as encoder and decoder keep it while coding: for one_rate, `fast` is the 12-bit probability
+// and `slow` is unused; for two_rates, both are 16-bit estimates.
+struct WorkingModel {
+  uint16_t fast, slow;
+  uint8_t seen;
+};
 ContextModels uniform_models();
 
 // `bytes[i]` coded in context `contexts[i]` (< context_count), every context starting from `start`.
@@ -48,20 +55,14 @@ class ArithmeticDecoder : public ByteSource {
   ArithmeticDecoder(const char* coded, size_t size, const ContextModels& start, Adaptation adaptation);
   uint8_t next(int context) override;
 
-  // A model as the coder keeps it: for one_rate, `fast` is the 12-bit probability and `slow` unused.
-  struct Model {
-    uint16_t fast, slow;
-    uint8_t seen;
-  };
-
  private:
   uint8_t input();
-  bool bit(Model& model);
+  bool bit(WorkingModel& model);
   const char* coded_;
   size_t size_, position_ = 0;
   uint32_t range_ = 0xFFFFFFFFu, code_ = 0;
   Adaptation adaptation_;
-  std::vector<Model> models_;
+  std::vector<WorkingModel> models_;
 };
 
 // How many decoded bytes one coded byte can at most stand for: bounds what a header may claim before
