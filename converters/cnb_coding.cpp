@@ -224,7 +224,7 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exac
   out = finish(std::move(contenders[best].scene), costed, contenders[best].share);
   for (size_t i = 0; i < contenders.size(); ++i) {
     const CodingChoiceReport& c = contenders[i].choice;
-    if (i == best || !mesh_where_cheaper || c.bodies_kept > 0 || c.bodies_meshed == 0 ||
+    if (i == best || c.bodies_kept > 0 || c.bodies_meshed == 0 ||
         c.unshared_edge_uses > costed.unshared_edge_uses)
       continue;
     CnbCoding other = finish(std::move(contenders[i].scene), c, contenders[i].share);

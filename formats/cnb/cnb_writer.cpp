@@ -74,7 +74,7 @@ bool loops_have_spare_knot_candidates(const std::vector<TrimLoop>& loops) {
 // bytes whole (the entropy stage barely shrinks them), the varints' at half (it roughly halves them).
 double trim_payload_cost(const std::vector<TrimLoop>& loops, int exponent, const CodingState& state) {
   ByteWriter scratch;
-  CodingState after;
+  CodingState after;  // what trims read of the state; not the mesh tables, which can be large
   after.previous_edge = state.previous_edge;
   after.knots = state.knots;
   after.weights = state.weights;

@@ -24,14 +24,7 @@ const std::string& capping_file() {
   return bytes;
 }
 
-std::string error_of(const std::string& bytes) {
-  try {
-    read_cnb(bytes, name);
-  } catch (const FileError& e) {
-    return e.what();
-  }
-  return "(read without error)";
-}
+std::string error_of(const std::string& bytes) { return read_error(bytes, name); }
 
 TEST(CnbDamage, TruncatedFiles) {
   const std::string& file = capping_file();

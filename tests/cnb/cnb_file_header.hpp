@@ -1,11 +1,14 @@
 #pragma once
 // The header fields of a .cnb file of version 2 on (docs/cnb.md, "File header"), for tests that damage or
 // rewrite them: the payload size's varuint at byte 6, then the CRC-32 of all before it and of the coded
-// bytes.
+// bytes. And what the reader says of such a file.
 #include <zlib.h>
 
 #include <cstdint>
 #include <string>
+
+#include "formats/cnb/cnb_reader.hpp"
+#include "formats/common/file_io.hpp"
 
 namespace cadnurbs {
 
@@ -43,6 +46,16 @@ inline uint64_t payload_size(const std::string& file) {
 inline std::string with_version(std::string file, uint8_t version) {
   file[4] = static_cast<char>(version);
   return with_payload_size(file, payload_size(file));
+}
+
+// The reader's one-line refusal of `file` read as `name`, or "(read without error)".
+inline std::string read_error(const std::string& file, const std::string& name) {
+  try {
+    read_cnb(file, name);
+  } catch (const FileError& e) {
+    return e.what();
+  }
+  return "(read without error)";
 }
 
 }  // namespace cadnurbs

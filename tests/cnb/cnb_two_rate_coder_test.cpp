@@ -30,14 +30,7 @@ std::string written(const Scene& scene, double deviation, CnbOptions::Coder code
   return write_cnb(scene, options, report);
 }
 
-std::string error_of(const std::string& file) {
-  try {
-    read_cnb(file, "part.cnb");
-  } catch (const FileError& e) {
-    return e.what();
-  }
-  return "(read)";
-}
+std::string error_of(const std::string& file) { return read_error(file, "part.cnb"); }
 
 constexpr uint8_t two_rates_id = 4;  // the header's coder byte
 
