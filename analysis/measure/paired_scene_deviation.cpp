@@ -25,6 +25,10 @@ std::vector<double> sample_parameters(const std::vector<double>& knots, int orde
   return t;
 }
 
+// Samples per span of a trimming curve's image against which the other curve's samples find their nearest
+// point (thinned to 256 in all, as sample_parameters thins).
+constexpr int kDenseSamples = 256;
+
 [[noreturn]] void differ(const std::string& where, const std::string& what) {
   throw std::invalid_argument("paired_scene_deviation: " + where + ": " + what + " differ");
 }
@@ -35,6 +39,19 @@ struct Comparison {
 
   void distance(double& field, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     field = std::max(field, (a - b).norm());
+    ++result.samples;
+  }
+
+  // The distance from p to the nearest point of the polyline through `line`.
+  void nearest_on_polyline(double& field, const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& line) {
+    double nearest = line.empty() ? 0.0 : (p - line.front()).norm();
+    for (size_t i = 0; i + 1 < line.size(); ++i) {
+      const Eigen::Vector3d d = line[i + 1] - line[i];
+      const double length2 = d.squaredNorm();
+      const double f = length2 > 0 ? std::clamp((p - line[i]).dot(d) / length2, 0.0, 1.0) : 0.0;
+      nearest = std::min(nearest, (p - (line[i] + f * d)).norm());
+    }
+    field = std::max(field, nearest);
     ++result.samples;
   }
 
@@ -57,10 +74,21 @@ struct Comparison {
         if (!ca != !cb) differ(where, "kinds of segment " + std::to_string(s) + " of loop " + std::to_string(l));
         const auto on_a = [&](const Eigen::Vector2d& p) { return wa * surface_point(sa, p.x(), p.y()); };
         const auto on_b = [&](const Eigen::Vector2d& p) { return wb * surface_point(sb, p.x(), p.y()); };
-        if (ca) {
-          // Knots may differ (the .cnb writer removes spare ones), the parametrisation may not.
-          if (ca->order != cb->order || ca->knots.front() != cb->knots.front() || ca->knots.back() != cb->knots.back())
-            differ(where, "trimming curve orders or domains");
+        if (ca && (ca->order != cb->order || ca->knots.front() != cb->knots.front() ||
+                   ca->knots.back() != cb->knots.back())) {
+          // Another curve for the same boundary (the .cnb writer refits approximated pcurves): the images
+          // compared both ways.
+          const auto image = [&](const NurbsCurve& c, const auto& on, int per) {
+            std::vector<Eigen::Vector3d> points;
+            for (double t : sample_parameters(c.knots, c.order, c.count(), per)) points.push_back(on(curve_point(c, t).head<2>()));
+            return points;
+          };
+          const std::vector<Eigen::Vector3d> image_a = image(*ca, on_a, per_span), image_b = image(*cb, on_b, per_span);
+          const std::vector<Eigen::Vector3d> dense_a = image(*ca, on_a, kDenseSamples), dense_b = image(*cb, on_b, kDenseSamples);
+          for (const auto& p : image_a) nearest_on_polyline(result.boundaries, p, dense_b);
+          for (const auto& p : image_b) nearest_on_polyline(result.boundaries, p, dense_a);
+        } else if (ca) {
+          // Knots may differ (the .cnb writer removes spare ones), the parametrisation not.
           for (double t : sample_parameters(ca->knots, ca->order, ca->count(), per_span))
             distance(result.boundaries, on_a(curve_point(*ca, t).head<2>()), on_b(curve_point(*cb, t).head<2>()));
         } else {

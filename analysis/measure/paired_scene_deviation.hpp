@@ -6,7 +6,9 @@
 //   surfaces   - both surfaces on a grid of the domain (samples_per_span per knot span in u and v,
 //                at most 256 a direction, knot lines included);
 //   boundaries - every trimming segment sampled at the same parameters (per span of the original's), each
-//                mapped by its own surface;
+//                mapped by its own surface; where the decoded segment is another curve (another order or
+//                domain: the .cnb writer refits approximated pcurves), the two images both ways, each
+//                sample to the nearest point of the other's image as a polyline of up to 256 points;
 //   curves     - 3D curves sampled the same way; meshes - corresponding vertices.
 // A measurement (attained distances at samples), not a bound.
 #include "core/scene.hpp"

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/knot_removal.hpp"
+#include "core/refit_cubic_within.hpp"
 #include "core/world_scale.hpp"
 #include "formats/cnb/cnb_numbers.hpp"
 
@@ -91,9 +92,15 @@ std::vector<TrimLoop> trims_without_spare_knots(const std::vector<TrimLoop>& loo
   for (auto& loop : result)
     for (auto& segment : loop.segments)
       if (auto* curve = std::get_if<NurbsCurve>(&segment); curve && has_spare_knot_candidates(*curve)) {
-        int count = 0;
-        *curve = remove_knots(*curve, uv_tolerance, &count);
-        if (removed) *removed += count;
+        const size_t knots_before = curve->knots.size();
+        NurbsCurve fewer = remove_knots(*curve, uv_tolerance);
+        if (std::optional<NurbsCurve> cubic = refit_cubic_within(*curve, uv_tolerance);
+            cubic && cubic->points.size() < fewer.points.size())
+          fewer = std::move(*cubic);
+        if (fewer.knots.size() < knots_before) {
+          if (removed) *removed += static_cast<long>(knots_before - fewer.knots.size());
+          *curve = std::move(fewer);
+        }
       }
   return result;
 }

@@ -55,8 +55,12 @@ double trim_bound(const NurbsSurface& surface, int exponent, double world_scale)
 // kernel approximated carry many knots, none a short decimal (a Fastron 77A inductor's windings: 670
 // knots written as float64s at D = 0.01 mm). Ends stay where they were (interior knots only), so loops stay
 // closed; the writer then takes the grid again for the new loops, never coarser than before.
+// A polynomial curve is also refit as a cubic within t (core/refit_cubic_within: its image within t of
+// the old one both ways, its ends kept bit for bit, its parametrisation not), and each curve keeps
+// whichever of the two has fewer control points: the DTMB bow's degree-8 boundary, 313 control points in
+// 40 float64-knotted spans, takes 54 on whole-number knots at 1e-3 of the part's diagonal.
 // has_spare_knot_candidates: the curve has interior knots.
-// `removed` (may be null) receives the number of knots removed. Returns the loops as they are for t <= 0.
+// `removed` (may be null) receives the number of knots fewer. Returns the loops as they are for t <= 0.
 bool has_spare_knot_candidates(const NurbsCurve& curve);
 double spare_trim_tolerance(const NurbsSurface& surface, double slack, double world_scale);
 std::vector<TrimLoop> trims_without_spare_knots(const std::vector<TrimLoop>& loops, double uv_tolerance,

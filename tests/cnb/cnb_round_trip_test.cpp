@@ -148,16 +148,22 @@ TEST(CnbRoundTrip, ManyDistinctWeightsRoundedWithinDeviation) {
   }
 }
 
-// A hole in a plate bounded by a pcurve such as a kernel's approximation gives: a closed cubic with 48
-// knots at values no short decimal reaches (each written as a float64). The writer removes the knots the
-// curve does not need within the part of the trims' budget their grid leaves, and the boundary stays within
-// the bound, which includes that part.
-TEST(CnbRoundTrip, ApproximatedTrimCurvesLoseTheirSpareKnotsWithinTheBound) {
+// A flat square of 100 mm, its domain the same square.
+NurbsSurface square_plate() {
   NurbsSurface plate;
   plate.u_order = plate.v_order = 2;
   plate.u_count = plate.v_count = 2;
   plate.u_knots = plate.v_knots = {0, 0, 100, 100};
   plate.points = {{0, 0, 0}, {100, 0, 0}, {0, 100, 0}, {100, 100, 0}};
+  return plate;
+}
+
+// A hole in a plate bounded by a pcurve such as a kernel's approximation gives: a closed cubic with 48
+// knots at values no short decimal reaches (each written as a float64). The writer removes the knots the
+// curve does not need within the part of the trims' budget their grid leaves, and the boundary stays within
+// the bound, which includes that part.
+TEST(CnbRoundTrip, ApproximatedTrimCurvesLoseTheirSpareKnotsWithinTheBound) {
+  const NurbsSurface plate = square_plate();
   NurbsCurve hole;
   hole.dimension = 2;
   hole.order = 4;
@@ -188,6 +194,45 @@ TEST(CnbRoundTrip, ApproximatedTrimCurvesLoseTheirSpareKnotsWithinTheBound) {
     // 45 float64 knots alone would take 360 bytes.
     EXPECT_LT(r.bytes.size(), 200u);
   }
+}
+
+// A hole whose boundary a kernel approximated at degree 7 (as the DTMB bow's, at degree 8): 60 control
+// points in 53 spans, their knots no short decimals. Knot removal keeps every span and its float64 knot;
+// refit_cubic_within gives up the parametrisation and writes a cubic on whole-number knots, at D = 1 mm.
+// (At 0.1 mm the curve must stay within about 1e-4 of its (u,v), and knot removal's degree-7 curve of 37
+// points codes smaller: the writer keeps whichever loops cost less.)
+TEST(CnbRoundTrip, ApproximatedTrimCurvesAreRefitAsCubicsWithinTheBound) {
+  const NurbsSurface plate = square_plate();
+  NurbsCurve hole;
+  hole.dimension = 2;
+  hole.order = 8;
+  const int count = 60, spans = count - hole.order + 1;
+  hole.knots.assign(hole.order, 0.0);
+  for (int i = 1; i < spans; ++i) {
+    const double s = static_cast<double>(i) / spans;
+    hole.knots.push_back(std::sqrt(2.0) * (s + 0.3 * s * (1 - s)));
+  }
+  hole.knots.insert(hole.knots.end(), hole.order, std::sqrt(2.0));
+  for (int i = 0; i < count; ++i) {
+    const double a = i < count - 1 ? -2 * M_PI * i / (count - 1) : 0;  // clockwise: a hole
+    hole.points.emplace_back(50 + (30 + 3 * std::sin(3 * a)) * std::cos(a), 50 + 30 * std::sin(a), 0);
+  }
+  TrimLoop loop;
+  loop.segments.emplace_back(hole);
+  Scene scene;
+  scene.root.shapes.push_back({"plate", TrimmedSurface{plate, {domain_loop(plate), loop}}, std::nullopt});
+  const double d = 1.0;
+  const RoundTrip r = round_trip(scene, d);
+  const auto& back = std::get<TrimmedSurface>(r.decoded.root.shapes[0].geometry);
+  const auto& curve = std::get<NurbsCurve>(back.loops[1].segments[0]);
+  EXPECT_EQ(curve.order, 4);
+  EXPECT_LE(curve.points.size(), 30u);
+  for (double k : curve.knots) EXPECT_EQ(k, std::round(k));
+  EXPECT_LE(r.measured.max(), r.report.deviation_bound());
+  EXPECT_LE(r.report.deviation_bound(), d);
+  EXPECT_GT(r.measured.boundaries, 0.0);
+  // 54 float64 knots alone would take 432 bytes.
+  EXPECT_LT(r.bytes.size(), 160u);
 }
 
 // A swept surface: its weights are a profile's (u) times a path's (v), each product rounded to 12
