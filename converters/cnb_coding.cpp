@@ -34,7 +34,8 @@ constexpr double kWholeMeshShares[] = {0.6, 0.8};
 constexpr double kMeshedWithin = 1.5;
 // Where the chosen meshes crack (the part's own faces lie farther apart than the share along a shared
 // edge), this share is tried too, and fewer cracks win over fewer bytes: Ventilator.stp at 1e-4 of its
-// diagonal meshes with 36 open edges at 0.4, 0.6 and 0.8 of D and closed at 0.95, as at D.
+// diagonal meshes with 36 open edges at 0.4, 0.6 and 0.8 of D and closed at 0.95, as at D (its NURBS,
+// their approximated pcurves refit, now cost less than either).
 constexpr double kClosingShare = 0.95;
 // The scales at which a decoded file that sews alike is meshed to see whether it meshes alike too. One was
 // a cliff: sunglasses_lens.igs at D = 3e-4 of its diagonal meshed alike at 1/sqrt(2) but not at 1, and went

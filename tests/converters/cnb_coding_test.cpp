@@ -112,17 +112,19 @@ TEST(CnbCoding, AWhollyMeshedPartTakesTheShareThatCodesSmallest) {
 // Where the part's own faces lie farther apart along a shared edge than the meshes' share of D, their meshes
 // crack there; a larger share closes them, and a closed file wins over a smaller one. Ventilator.stp at 1e-4
 // of its diagonal: its hexagon's faces match their edges within 0.95 D but not within 0.4, 0.6 or 0.8 D
-// (36 open edges, 43,522 bytes); it is written at 0.95, closed.
-TEST(CnbCoding, MeshesThatCrackAtTheShareTakeTheShareThatClosesThem) {
+// (36 open edges, 43,522 bytes); it was written at 0.95, closed (46,083 bytes). Since its approximated
+// pcurves are refit as cubics (refit_cubic_within), its NURBS cost less than those meshes (39,442 bytes)
+// and are written instead, with no crack; cnb_read_back meshes that file (long tier).
+TEST(CnbCoding, MeshesThatCrackAtTheShareLoseToClosedNurbs) {
   const Scene part = read_scene(std::string(CADNURBS_SHARED_DIR) + "/corpus/step/Ventilator.stp");
   const double d = 1e-4 * scene_bounding_box(part).diagonal().norm();
   const CnbCoding coding = cnb_coding(compact_scene(part, written_tolerance(part, 0)), d, &part);
-  ASSERT_EQ(count_entities(coding.scene).trimmed_surfaces, 0u);
+  EXPECT_EQ(coding.choice.bodies_meshed, 0);
   EXPECT_EQ(coding.choice.unshared_edge_uses, 0);
-  EXPECT_EQ(coding.options.trim_share, 0.95);
+  EXPECT_LT(coding.bytes.size(), 43'522u);
   EXPECT_LE(coding.written.deviation_bound(), d);
-  const EdgeCounts back = count_boundary_edges(weld_exact(scene_triangles(read_cnb(coding.bytes, "Ventilator.cnb"))));
-  EXPECT_EQ(back.boundary, 0);
+  EXPECT_EQ(count_entities(read_cnb(coding.bytes, "Ventilator.cnb")).trimmed_surfaces,
+            count_entities(coding.scene).trimmed_surfaces);
 }
 
 // A wholly meshed scene is written on whichever slightly finer grid codes smallest: io1-tu-203.stp at 1 mm
