@@ -85,7 +85,7 @@ double spare_trim_tolerance(const NurbsSurface& surface, double slack, double wo
   return slack / per_uv;
 }
 
-std::vector<TrimLoop> trims_without_spare_knots(const std::vector<TrimLoop>& loops, double uv_tolerance,
+std::vector<TrimLoop> trims_with_fewer_knots(const std::vector<TrimLoop>& loops, double uv_tolerance,
                                                 long* removed) {
   std::vector<TrimLoop> result = loops;
   if (!(uv_tolerance > 0)) return result;

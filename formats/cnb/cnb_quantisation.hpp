@@ -63,7 +63,7 @@ double trim_bound(const NurbsSurface& surface, int exponent, double world_scale)
 // `removed` (may be null) receives the number of knots fewer. Returns the loops as they are for t <= 0.
 bool has_spare_knot_candidates(const NurbsCurve& curve);
 double spare_trim_tolerance(const NurbsSurface& surface, double slack, double world_scale);
-std::vector<TrimLoop> trims_without_spare_knots(const std::vector<TrimLoop>& loops, double uv_tolerance,
+std::vector<TrimLoop> trims_with_fewer_knots(const std::vector<TrimLoop>& loops, double uv_tolerance,
                                                 long* removed = nullptr);
 
 // Weights: kept exactly, except on a rational surface with more than `exact_weight_limit` distinct

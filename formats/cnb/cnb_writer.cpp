@@ -52,7 +52,7 @@ TrimCoding trims_within(const std::vector<TrimLoop>& loops, const NurbsSurface& 
   c.exponent = trim_step_exponent_keeping_loops(loops, share);
   const double spare = trim_budget - trim_bound(surface, c.exponent, world_scale);
   std::vector<TrimLoop> simplified =
-      trims_without_spare_knots(loops, spare_trim_tolerance(surface, spare, world_scale), &c.knots_removed);
+      trims_with_fewer_knots(loops, spare_trim_tolerance(surface, spare, world_scale), &c.knots_removed);
   if (c.knots_removed == 0) return c;  // not taken: the caller keeps the loops as they are
   // Never a coarser grid than before: the spare was measured against the first one.
   c.exponent = std::min(c.exponent, trim_step_exponent_keeping_loops(simplified, share));
