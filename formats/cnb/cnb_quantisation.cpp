@@ -86,7 +86,7 @@ double spare_trim_tolerance(const NurbsSurface& surface, double slack, double wo
 }
 
 std::vector<TrimLoop> trims_with_fewer_knots(const std::vector<TrimLoop>& loops, double uv_tolerance,
-                                                long* removed) {
+                                             long* removed) {
   std::vector<TrimLoop> result = loops;
   if (!(uv_tolerance > 0)) return result;
   for (auto& loop : result)

@@ -64,7 +64,7 @@ double trim_bound(const NurbsSurface& surface, int exponent, double world_scale)
 bool has_spare_knot_candidates(const NurbsCurve& curve);
 double spare_trim_tolerance(const NurbsSurface& surface, double slack, double world_scale);
 std::vector<TrimLoop> trims_with_fewer_knots(const std::vector<TrimLoop>& loops, double uv_tolerance,
-                                                long* removed = nullptr);
+                                             long* removed = nullptr);
 
 // Weights: kept exactly, except on a rational surface with more than `exact_weight_limit` distinct
 // weights (a table would cost 8 bytes each). There each weight is rounded to 2^(n·h), a relative error

@@ -43,8 +43,9 @@ struct TrimCoding {
 };
 
 // The (non-empty) trims of a face, their grid taken from `grid_fraction` of their world budget `trim_budget`
-// and their spare knots removed within what the grid leaves (cnb_quantisation.hpp); `share_exponent(fraction)`
-// is the grid that fraction of the budget allows, before the loops' own limit. No loops when no knot went.
+// and their curves given fewer knots (spare ones removed, or refit as cubics) within what the grid leaves
+// (cnb_quantisation.hpp); `share_exponent(fraction)` is the grid that fraction of the budget allows, before
+// the loops' own limit. No loops when no knot went.
 TrimCoding trims_within(const std::vector<TrimLoop>& loops, const NurbsSurface& surface, double world_scale,
                         double trim_budget, double grid_fraction, const std::function<int(double)>& share_exponent) {
   TrimCoding c;
