@@ -7,20 +7,14 @@
 #include "core/bernstein_polynomial.hpp"
 #include "core/bezier_extraction.hpp"
 #include "core/knot_insertion.hpp"
+#include "core/knot_vector.hpp"
 
 namespace cadnurbs {
 
 namespace {
 
-// The distinct knot values of `c` strictly inside its domain.
-std::vector<double> interior_breakpoints(const NurbsCurve& c) {
-  std::vector<double> breaks;
-  for (double t : c.knots)
-    if (t > c.domain_start() && t < c.domain_end() && (breaks.empty() || breaks.back() != t)) breaks.push_back(t);
-  return breaks;
-}
-
-// `c` with each of `breaks` it lacks inserted once: its spans then end at every one of them.
+// `c` with each of `breaks` it lacks inserted once: its spans then end at every one of them. (The other
+// curve's domain ends are `c`'s own: the domains are equal.)
 NurbsCurve split_at(const NurbsCurve& c, const std::vector<double>& breaks) {
   std::vector<double> missing;
   for (double t : breaks)
@@ -41,8 +35,8 @@ std::vector<SpanDistance> curve_distance_bounds(const NurbsCurve& a, const Nurbs
   if (a.dimension != b.dimension) throw std::invalid_argument("curve_distance_bound: curves of different dimensions");
   if (a.domain_start() != b.domain_start() || a.domain_end() != b.domain_end())
     throw std::invalid_argument("curve_distance_bound: curves on different domains");
-  const std::vector<NurbsCurve> pieces_a = bezier_segments(split_at(a, interior_breakpoints(b)));
-  const std::vector<NurbsCurve> pieces_b = bezier_segments(split_at(b, interior_breakpoints(a)));
+  const std::vector<NurbsCurve> pieces_a = bezier_segments(split_at(a, domain_breaks(b.knots, b.order, b.count())));
+  const std::vector<NurbsCurve> pieces_b = bezier_segments(split_at(b, domain_breaks(a.knots, a.order, a.count())));
   if (pieces_a.size() != pieces_b.size()) throw std::logic_error("curve_distance_bound: the spans do not match");
   std::vector<SpanDistance> spans;
   for (size_t i = 0; i < pieces_a.size(); ++i)
