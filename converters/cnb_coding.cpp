@@ -16,6 +16,7 @@
 #include "converters/scene_preparation.hpp"
 #include "core/bounding_box.hpp"
 #include "core/number_format.hpp"
+#include "formats/cnb/cnb_quantisation.hpp"
 #include "formats/cnb/cnb_reader.hpp"
 #include "formats/cnb/cnb_writer.hpp"
 
@@ -26,8 +27,10 @@ namespace {
 constexpr double kMeshShare = 0.4;
 // Where that share meshed every body, these are tried too: a coarser mesh on a finer grid is smaller on
 // small curved parts (90 KiCad parts at 1 mm, the best of 0.4, 0.6 and 0.8 per part: 73,764 -> 72,063
-// bytes before mesh groups), while 0.6 or 0.8 for all was larger (77,510 and 80,860).
-constexpr double kWholeMeshShares[] = {0.6, 0.8};
+// bytes before mesh groups), while 0.6 or 0.8 for all was larger (77,510 and 80,860). 0.5 and 0.7 help
+// dense curved meshes, whose cost turns on the balance of triangles and grid (Ventilator.stp at 3e-4 of its
+// diagonal: 19,326 -> 19,047 bytes; linkrods.step at 1e-4: 5,975 -> 5,902).
+constexpr double kWholeMeshShares[] = {0.5, 0.6, 0.7, 0.8};
 // They are tried, too, where the NURBS were chosen but a wholly meshed candidate came within this factor:
 // the Phoenix MC 1,5/2-GF MountHole at 0.01 mm codes its NURBS in 3,509 bytes (at 561b8b1), its meshes in
 // 3,732 at 0.4 and in 2,468 at 0.8.
@@ -51,6 +54,41 @@ constexpr int kMeshChecks = 3;
 // grids take to 620 and 566.
 constexpr int kFinerGrids = 20;
 constexpr double kFinerGridStep = 0.01;
+
+// A grid coarser than the worst rounding allows can still keep every vertex within the points' share:
+// the writer then states their largest move as decoded (CnbOptions::measured_point_step). Tried on
+// wholly meshed scenes: steps up to kCoarserGrids·kCoarserGridStep coarser than the worst case's, and
+// the decimal steps (1, 2, 2.5 and 5 times a power of ten) up to kCoarsestDecimal times it, on which parts
+// drawn on decimal dimensions keep their corners exactly.
+constexpr int kCoarserGrids = 8;
+constexpr double kCoarserGridStep = 0.05;
+constexpr double kCoarsestDecimal = 64;
+
+// The steps above whose largest move is within the points' share and that collapse no more faces than
+// the worst case's step: each as the float32 the writer stores.
+std::vector<double> coarser_steps(const Scene& scene, const CnbOptions& options) {
+  const double q = cnb::point_step(scene, options);
+  const double share = (1.0 - options.trim_share) * options.quantisation_scale * options.max_deviation;
+  std::vector<double> candidates;
+  for (int i = 1; i <= kCoarserGrids; ++i) candidates.push_back(q * (1.0 + kCoarserGridStep * i));
+  for (double decade = std::pow(10.0, std::floor(std::log10(q))); decade <= kCoarsestDecimal * q; decade *= 10.0)
+    for (double mantissa : {1.0, 2.0, 2.5, 5.0})
+      if (mantissa * decade > q && mantissa * decade <= kCoarsestDecimal * q) candidates.push_back(mantissa * decade);
+  std::vector<double> steps;
+  long collapsed = -1;
+  for (double candidate : candidates) {
+    const double step = static_cast<float>(candidate);
+    try {
+      if (cnb::largest_point_move(scene, step) > share) continue;
+      if (collapsed < 0) collapsed = cnb::collapsed_faces(scene, static_cast<float>(q));
+      if (cnb::collapsed_faces(scene, step) > collapsed) continue;
+    } catch (const std::invalid_argument&) {
+      continue;  // a coordinate too far from 0 for the grid
+    }
+    steps.push_back(step);
+  }
+  return steps;
+}
 
 // How a scene meshes as convert meshes a .cnb of it (certified_mesh: sewn first where it sews).
 struct MeshedAsRead {
@@ -159,7 +197,8 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exac
     return cheapest_coding(scene, {max_deviation, share, !sewn}, coded_bytes, &choice, exact);
   };
   // A coding at one share, written: the trim share is the meshes' share. A scene without trimmed surfaces
-  // is also written on the finer grids and keeps the smallest file.
+  // is also written on the finer grids, and it or a scene not sewn on reading on the coarser ones
+  // (coarser_steps); the smallest file is kept.
   auto finish = [&](Scene chosen, const CodingChoiceReport& choice, double share) {
     CnbCoding c;
     c.scene = std::move(chosen);
@@ -168,6 +207,7 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exac
     c.options.trim_share = share;
     c.options.mesh_deviation = choice.certified_deviation;
     c.bytes = write_cnb(c.scene, c.options, &c.written);
+    const CnbOptions at_step = c.options;
     if (mesh_where_cheaper && count_entities(c.scene).trimmed_surfaces == 0) {
       const CnbOptions first = c.options;
       for (int i = 1; i <= kFinerGrids; ++i) {
@@ -181,6 +221,23 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exac
           break;  // a grid too fine for the model's coordinates; finer ones are too
         }
         if (bytes.size() < c.bytes.size()) c.bytes = std::move(bytes), c.options = finer, c.written = written;
+      }
+      c.choice.set_bytes(c.bytes.size());
+    }
+    // Coarser grids keep the same bound on every point's move, but not the sewing scale's check of how
+    // a sewn file's faces join (scale_keeping_sewn), which was made on the step itself.
+    if (mesh_where_cheaper && (count_entities(c.scene).trimmed_surfaces == 0 || !sewn_when_meshed(c.scene))) {
+      for (double step : coarser_steps(c.scene, at_step)) {
+        CnbOptions coarser = at_step;
+        coarser.measured_point_step = step;
+        CnbWriteReport written;
+        std::string bytes;
+        try {
+          bytes = write_cnb(c.scene, coarser, &written);
+        } catch (const std::invalid_argument&) {
+          continue;
+        }
+        if (bytes.size() < c.bytes.size()) c.bytes = std::move(bytes), c.options = coarser, c.written = written;
       }
       c.choice.set_bytes(c.bytes.size());
     }

@@ -23,6 +23,11 @@ struct CnbOptions {
   // does so at D/4, so convert takes the largest scale that leaves its decoded scene as sewn as the scene
   // itself (converters/cnb_coding).
   double quantisation_scale = 1.0;
+  // 0: control points and vertices take the coarsest grid whose worst rounding (q·√3/2) stays within their
+  // share of D. Else this step (stored as a float32, as the writer's own is), which may be coarser: the
+  // points' bound is then their largest move on it as decoded (cnb::largest_point_move), and the writer
+  // refuses a step on which that exceeds (1 - trim_share)·quantisation_scale·D.
+  double measured_point_step = 0.0;
   // The entropy stage: the smallest of deflate, the adaptive arithmetic coder with every model starting at
   // ½, the same coder starting from the coder prior (cnb_coder_prior.hpp), and the coder whose models mix
   // two rates of adaptation, from the prior (adaptive_arithmetic_coder.hpp); or one of them.
@@ -32,7 +37,9 @@ struct CnbOptions {
 // What the writer chose and what it guarantees.
 struct CnbWriteReport {
   double point_step = 0;   // q: the grid of control points and mesh vertices (scene units)
-  double point_bound = 0;  // largest world move of a control point or vertex: q·√3/2·(largest world scale)
+  // Largest world move of a control point or vertex: q·√3/2·(largest world scale), or the move itself
+  // where the caller chose the step (CnbOptions::measured_point_step).
+  double point_bound = 0;
   // Largest world move, over faces, caused by the trims' own grid plus (faces with quantised weights)
   // the weights' rounding, plus (faces whose trims lost spare knots) the slack the knots took.
   double trim_bound = 0;

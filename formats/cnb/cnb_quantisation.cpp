@@ -37,6 +37,69 @@ double decimal_step(double largest) {
   return hundredth / n <= largest ? hundredth / n : hundredth / (n + 1);
 }
 
+namespace {
+// Every control point and vertex of the scene's shapes with the linear part of its world transform.
+template <typename Visit>
+void visit_points(const SceneNode& node, const Eigen::Affine3d& parent, const Visit& visit) {
+  const Eigen::Affine3d world = parent * node.transform;
+  const Eigen::Matrix3d linear = world.linear();
+  for (const auto& shape : node.shapes) {
+    const auto each = [&](const std::vector<Eigen::Vector3d>& points) {
+      for (const auto& p : points) visit(p, linear);
+    };
+    if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry))
+      each(t->surface.points);
+    else if (const auto* c = std::get_if<NurbsCurve>(&shape.geometry))
+      each(c->points);
+    else if (const auto* m = std::get_if<TriangleMesh>(&shape.geometry))
+      each(m->positions);
+    else
+      each(std::get<PolygonMesh>(shape.geometry).positions);
+  }
+  for (const auto& child : node.children) visit_points(child, world, visit);
+}
+
+Eigen::Vector3d decoded(const Eigen::Vector3d& p, double q) {
+  return {static_cast<double>(on_grid(p.x(), q)) * q, static_cast<double>(on_grid(p.y(), q)) * q,
+          static_cast<double>(on_grid(p.z(), q)) * q};
+}
+
+template <typename Visit>
+void visit_meshes(const SceneNode& node, const Visit& visit) {
+  for (const auto& shape : node.shapes) {
+    if (const auto* m = std::get_if<TriangleMesh>(&shape.geometry)) {
+      for (const auto& t : m->triangles) visit(m->positions, t.data(), t.size());
+    } else if (const auto* p = std::get_if<PolygonMesh>(&shape.geometry)) {
+      for (const auto& polygon : p->polygons) visit(p->positions, polygon.data(), polygon.size());
+    }
+  }
+  for (const auto& child : node.children) visit_meshes(child, visit);
+}
+}  // namespace
+
+double largest_point_move(const Scene& scene, double q) {
+  double largest = 0.0;
+  visit_points(scene.root, Eigen::Affine3d::Identity(), [&](const Eigen::Vector3d& p, const Eigen::Matrix3d& linear) {
+    largest = std::max(largest, (linear * (decoded(p, q) - p)).norm());
+  });
+  return largest;
+}
+
+long collapsed_faces(const Scene& scene, double q) {
+  long collapsed = 0;
+  visit_meshes(scene.root, [&](const std::vector<Eigen::Vector3d>& positions, const int* corners, size_t n) {
+    std::vector<Eigen::Vector3d> on_grid_corners;
+    for (size_t k = 0; k < n; ++k) on_grid_corners.push_back(decoded(positions[corners[k]], q));
+    for (size_t a = 0; a < n; ++a)
+      for (size_t b = a + 1; b < n; ++b)
+        if (on_grid_corners[a] == on_grid_corners[b]) {
+          ++collapsed;
+          return;
+        }
+  });
+  return collapsed;
+}
+
 int trim_step_exponent(const NurbsSurface& surface, const CnbOptions& options, double world_scale) {
   check(options);
   const double bound = surface_derivative_bound(surface) * std::max(world_scale, 1e-300);

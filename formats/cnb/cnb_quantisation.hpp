@@ -27,6 +27,18 @@ namespace cadnurbs::cnb {
 // q as above. Throws std::invalid_argument for D, trim_share or quantisation_scale out of range.
 double point_step(const Scene& scene, const CnbOptions& options);
 
+// The largest world move of a control point or vertex of `scene` on the grid of step q: each coordinate
+// decodes as round(x/q)·q (the writer's on_grid), and each move is taken through its shape's world
+// transform, as decoded. It bounds the points' move as q·√3/2·scale does, with no worst case: where a step
+// coarser than point_step leaves every point this close, the convex-hull argument above holds with this
+// figure (on KiCad parts drawn on decimal dimensions, a box's corners may not move at all).
+double largest_point_move(const Scene& scene, double q);
+
+// How many triangles and polygons of the scene's meshes have two corners on one grid point of step q
+// (their decoded face collapses). A caller choosing a coarser step takes none that collapses more than
+// point_step does.
+long collapsed_faces(const Scene& scene, double q);
+
 // The largest step not above `largest` that divides 1/100 of the scene's unit or is a whole multiple of
 // it: 0.01·m or 0.01/n. Parts drawn on decimal dimensions (a pitch of 0.5 or 2.54 mm) then place repeated
 // pins whole steps apart, so that pins rounded to the grid stay copies of each other (cnb_mesh_copies.hpp);

@@ -291,9 +291,18 @@ std::string encode(const Scene& scene, const CnbOptions& options, const Encoding
   const double largest_step = point_step(scene, options);
   float step = static_cast<float>(choice.decimal_grid ? decimal_step(largest_step) : largest_step);
   if (static_cast<double>(step) > largest_step) step = std::nextafter(step, 0.0f);
+  if (options.measured_point_step > 0) step = static_cast<float>(options.measured_point_step);
   const double q = step;
   r.point_step = q;
   r.point_bound = q * std::sqrt(3.0) / 2.0 * largest_world_scale(scene);
+  if (options.measured_point_step > 0) {
+    r.point_bound = largest_point_move(scene, q);
+    const double share = (1.0 - options.trim_share) * options.quantisation_scale * options.max_deviation;
+    if (!(r.point_bound <= share))
+      throw std::invalid_argument("cnb: on a grid of step " + std::to_string(q) + " points move up to " +
+                                  std::to_string(r.point_bound) + ", more than their share of D (" +
+                                  std::to_string(share) + ")");
+  }
   SceneEncoder encoder{ByteWriter{}, analyses, options, q, r, {}, {}, 0, {}};
   encoder.state.periods = &analyses.periods;
   encoder.state.trim_extrapolation = choice.trim_extrapolation;
@@ -363,7 +372,7 @@ std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteRep
   };
   other_choice.trim_extrapolation = true;
   if (count_entities(scene).surfaces > 0) try_other();
-  if (best_report.mesh_bound > 0) {
+  if (best_report.mesh_bound > 0 && !(options.measured_point_step > 0)) {  // a step given stays the step
     other_choice = choice;
     other_choice.decimal_grid = true;
     try_other();

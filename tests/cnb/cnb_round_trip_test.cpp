@@ -22,6 +22,7 @@
 #include "formats/step/step_reader.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 #include "formats/vrml/vrml_writer.hpp"
+#include "tests/cnb/expect_same_mesh_on_grid.hpp"
 
 namespace cadnurbs {
 namespace {
@@ -451,6 +452,53 @@ TEST(CnbSteps, ScaledNodesKeepTheWorldDeviation) {
   const RoundTrip r = round_trip(scene, 1.0);
   EXPECT_LE(r.measured.max(), 1.0);
   EXPECT_GT(r.measured.max(), 0.05);
+}
+
+// A step chosen by the caller (CnbOptions::measured_point_step) may be coarser than the worst rounding
+// allows: the bound is then the largest move as decoded, through the world transform. A fan on decimal
+// corners in a node scaled by 2: on the grid 0.25 only its apex (0.6, 0.25, 0.05) moves, by
+// (-0.1, 0, -0.05), so 2·√0.0125 ≈ 0.224 in the world, where the worst rounding would be 0.433.
+Scene decimal_fan() {
+  TriangleMesh fan;
+  fan.positions = {{0, 0, 0}, {1, 0, 0}, {1, 0.5, 0}, {0, 0.5, 0}, {0.6, 0.25, 0.05}};
+  fan.triangles = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+  Scene scene;
+  scene.root.transform = Eigen::Affine3d(Eigen::Scaling(2.0));
+  scene.root.shapes.push_back({"fan", fan, std::nullopt});
+  return scene;
+}
+
+TEST(CnbSteps, AMeasuredStepBoundsThePointsByTheirLargestMove) {
+  const Scene scene = decimal_fan();
+  EXPECT_NEAR(cnb::largest_point_move(scene, 0.25), 2 * std::sqrt(0.0125), 1e-12);
+  EXPECT_NEAR(cnb::largest_point_move(scene, 0.05), 0.0, 1e-15);  // (0.6 is 12 steps to a rounding)
+  EXPECT_EQ(cnb::collapsed_faces(scene, 0.25), 0);
+  EXPECT_EQ(cnb::collapsed_faces(scene, 1.0), 2);  // the apex rounds onto (1, 0, 0)
+
+  CnbOptions options;
+  options.max_deviation = 0.4;  // the worst rounding allows a step of 0.139
+  ASSERT_LT(cnb::point_step(scene, options), 0.25);
+  options.measured_point_step = 0.25;
+  CnbWriteReport report;
+  const std::string bytes = write_cnb(scene, options, &report);
+  EXPECT_EQ(report.point_step, 0.25);
+  EXPECT_NEAR(report.point_bound, 2 * std::sqrt(0.0125), 1e-12);
+  EXPECT_LE(report.deviation_bound(), 0.4);
+  const Scene decoded = read_cnb(bytes, "fan.cnb");
+  expect_same_mesh_on_grid(std::get<TriangleMesh>(scene.root.shapes[0].geometry),
+                           std::get<TriangleMesh>(decoded.root.shapes[0].geometry), 0.25);
+
+  // On 0.3 the corner (1, 0.5) moves to (0.9, 0.6): 2·√0.02 ≈ 0.283 in the world, above (1 - 0.4)·0.4.
+  options.measured_point_step = 0.3;
+  const double step = static_cast<float>(0.3);
+  try {
+    write_cnb(scene, options);
+    FAIL() << "a step that moves points beyond their share was written";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "cnb: on a grid of step " + std::to_string(step) + " points move up to " +
+                                         std::to_string(cnb::largest_point_move(scene, step)) +
+                                         ", more than their share of D (0.240000)");
+  }
 }
 
 // The .x3dv as `convert` writes it: compact (or --exact-nurbs), with tessellation hints for 1e-3 of the
