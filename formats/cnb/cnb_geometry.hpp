@@ -1,6 +1,8 @@
 #pragma once
 // The geometry records of a .cnb payload (docs/cnb.md, "Geometry"): each writer quantises and predicts,
 // each reader refuses (PayloadError) what cannot be right and allocates only what the bytes left can hold.
+#include <unordered_set>
+
 #include "core/nurbs_curve.hpp"
 #include "core/polygon_mesh.hpp"
 #include "core/triangle_mesh.hpp"
@@ -30,6 +32,14 @@ struct CodingState {
   bool trim_knot_removal = true;   // writer only: whether trimming curves may lose their spare knots
   PeriodCache* periods = nullptr;  // writer only: periods found by earlier codings of the same meshes
   int periodic_meshes = 0;         // writer only: the traversal-coded meshes written with a period
+  // Writer only: a traversal-coded mesh's new vertex may take, instead of its nearest grid point, any
+  // within this many steps of it (the points' bound over the step) that codes cheaper against its
+  // prediction; 0: the nearest. Never a vertex whose nearest grid point is in `locked_points` (points two
+  // of the scene's points round to: shared, they must decode alike), nor one of a group with copies.
+  double free_radius = 0;
+  const std::unordered_set<GridPoint, GridPointHash>* locked_points = nullptr;
+  long vertices_off_nearest = 0;  // writer only: new vertices written at another grid point than their nearest
+  int traversal_meshes = 0;       // writer only: traversal-coded meshes written (a group's union counts once)
   // The format version being read or written: from 4 on, mesh symbols and vertex coordinates take the
   // contexts by previous symbol and by axis (cnb_stream.hpp).
   uint8_t version = format_version;

@@ -44,7 +44,11 @@ void write_mesh_group(ByteWriter& out, const GroupCopies& group, double q, Codin
       members.push_back(static_cast<int>(m));
     }
   }
+  // A copy repeats its source's decoded vertices: they stay where rounding puts them.
+  const double free_radius = state.free_radius;
+  if (!group.copies.empty()) state.free_radius = 0;
   write_traversal_mesh(out, joined, q, state, group.kept.size() > 1 ? &members : nullptr);  // one: no members
+  state.free_radius = free_radius;
   if (!group.copies.empty()) write_piece_copies(out, group.copies);
 }
 

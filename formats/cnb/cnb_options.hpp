@@ -28,6 +28,9 @@ struct CnbOptions {
   // points' bound is then their largest move on it as decoded (cnb::largest_point_move), and the writer
   // refuses a step on which that exceeds (1 - trim_share)·quantisation_scale·D.
   double measured_point_step = 0.0;
+  // Whether a traversal-coded mesh's vertex may be written at another grid point than its nearest, within
+  // the points' bound, where that codes smaller (CodingState::free_radius); false: each at its nearest.
+  bool free_mesh_points = true;
   // The entropy stage: the smallest of deflate, the adaptive arithmetic coder with every model starting at
   // ½, the same coder starting from the coder prior (cnb_coder_prior.hpp), and the coder whose models mix
   // two rates of adaptation, from the prior (adaptive_arithmetic_coder.hpp); or one of them.
@@ -58,6 +61,10 @@ struct CnbWriteReport {
   int mesh_groups = 0;                        // records holding several meshes of a node (kind 6)
   int piece_copies = 0;                       // pieces of a group's meshes coded as copies of others
   int periodic_meshes = 0;                    // traversal-coded meshes whose vertices a period predicts
+  // Traversal-coded vertices written at a grid point other than their nearest, within the points' bound,
+  // because it codes cheaper against their prediction (the writer tries this where the file holds a mesh).
+  long vertices_off_nearest = 0;
+  int traversal_meshes = 0;  // traversal-coded meshes (a group's union counts once)
   // Decoded payload bytes by what they hold: control point and vertex residuals, trim point residuals,
   // knots, weights (tables and indices), float64 values (transforms, header, raw knots, weight tables),
   // and the rest (structure, counts, names, indices, mesh symbols and ranks).

@@ -85,6 +85,18 @@ double largest_point_move(const Scene& scene, double q) {
   return largest;
 }
 
+std::vector<std::array<int64_t, 3>> shared_grid_points(const Scene& scene, double q) {
+  std::vector<std::array<int64_t, 3>> all;
+  visit_points(scene.root, Eigen::Affine3d::Identity(), [&](const Eigen::Vector3d& p, const Eigen::Matrix3d&) {
+    all.push_back({on_grid(p.x(), q), on_grid(p.y(), q), on_grid(p.z(), q)});
+  });
+  std::sort(all.begin(), all.end());
+  std::vector<std::array<int64_t, 3>> shared;
+  for (size_t i = 1; i < all.size(); ++i)
+    if (all[i] == all[i - 1] && (shared.empty() || shared.back() != all[i])) shared.push_back(all[i]);
+  return shared;
+}
+
 long collapsed_faces(const Scene& scene, double q) {
   long collapsed = 0;
   visit_meshes(scene.root, [&](const std::vector<Eigen::Vector3d>& positions, const int* corners, size_t n) {

@@ -7,6 +7,8 @@
 // was of the originals, and so moves by at most the largest control point move (the convex-hull
 // property). Mesh vertices move by the same. In world coordinates the move is scaled by the largest
 // singular value of the shape's world transform, so q = 2·(1 - trim_share)·D / (√3·largest scale).
+// (A traversal-coded mesh's vertex may be written at another grid point within the same bound where that
+// codes cheaper: CodingState::free_radius.)
 // (D here and below is max_deviation·quantisation_scale: a writer asked to move boundaries less.)
 //
 // Trimming curves: per face a grid of step s = 2^e in (u,v). A trim point moves by at most s per
@@ -33,6 +35,12 @@ double point_step(const Scene& scene, const CnbOptions& options);
 // coarser than point_step leaves every point this close, the convex-hull argument above holds with this
 // figure (on KiCad parts drawn on decimal dimensions, a box's corners may not move at all).
 double largest_point_move(const Scene& scene, double q);
+
+// The grid points of step q (in each point's own node's coordinates) that two or more of the scene's
+// control points and vertices round to, sorted. A writer that may move a vertex to another grid point
+// within the bound (CodingState::free_radius) keeps these where rounding puts them: shared positions
+// (a vertex of two meshes, a mesh's repeated vertex) must decode alike, or the part cracks there.
+std::vector<std::array<int64_t, 3>> shared_grid_points(const Scene& scene, double q);
 
 // How many triangles and polygons of the scene's meshes have two corners on one grid point of step q
 // (their decoded face collapses). A caller choosing a coarser step takes none that collapses more than

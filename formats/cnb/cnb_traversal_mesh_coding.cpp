@@ -217,7 +217,7 @@ class TraversalEncoder {
   // `members` (may be null): each triangle's mesh in a group, coded after the triangle.
   TraversalEncoder(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state,
                    const std::vector<int>* members)
-      : out_(out), mesh_(mesh), members_(members), state_(state), grid_(grid_points(mesh, q)) {
+      : out_(out), mesh_(mesh), members_(members), state_(state), q_(q), grid_(grid_points(mesh, q)) {
     pair_half_edges();
   }
 
@@ -225,6 +225,7 @@ class TraversalEncoder {
     const size_t triangles = mesh_.triangles.size();
     out_.varuint(used_vertex_count(), Field::count);
     out_.varuint(triangles, Field::count);
+    ++state_.traversal_meshes;
     // (The writer writes version 5: the period follows.)
     std::vector<GridPoint> used;
     for (const auto& t : mesh_.triangles)
@@ -284,9 +285,39 @@ class TraversalEncoder {
     previous_ = s;
   }
 
+  // The grid point new vertex v is written at: its nearest, or (state_.free_radius > 0) the one within
+  // that many steps of it that costs fewest bits against `predicted` (the nearest among equals). The
+  // vertex still moves no farther than the points' bound, and the reader decodes whichever is written.
+  GridPoint written_point(int v, const GridPoint& predicted) const {
+    const GridPoint& nearest = grid_[v];
+    const double radius = state_.free_radius;
+    if (!(radius > 0) || (state_.locked_points && state_.locked_points->count(nearest))) return nearest;
+    const Eigen::Vector3d at = mesh_.positions[v] / q_;
+    const auto distance = [&](const GridPoint& g) {
+      return (Eigen::Vector3d(static_cast<double>(g[0]), static_cast<double>(g[1]), static_cast<double>(g[2])) - at)
+          .norm();
+    };
+    GridPoint best = nearest;
+    double best_bits = state_.mesh_values.estimated_bits(nearest, predicted), best_distance = distance(nearest);
+    const double reach = radius * (1.0 - 1e-9);  // rounding in `at` stays inside the bound
+    GridPoint g;
+    for (g[0] = static_cast<int64_t>(std::ceil(at.x() - reach)); g[0] <= static_cast<int64_t>(std::floor(at.x() + reach)); ++g[0])
+      for (g[1] = static_cast<int64_t>(std::ceil(at.y() - reach)); g[1] <= static_cast<int64_t>(std::floor(at.y() + reach)); ++g[1])
+        for (g[2] = static_cast<int64_t>(std::ceil(at.z() - reach)); g[2] <= static_cast<int64_t>(std::floor(at.z() + reach)); ++g[2]) {
+          const double d = distance(g);
+          if (d > reach) continue;
+          const double bits = state_.mesh_values.estimated_bits(g, predicted);
+          if (bits < best_bits || (bits == best_bits && d < best_distance)) best = g, best_bits = bits, best_distance = d;
+        }
+    return best;
+  }
+
   // Names vertex v: new (its position predicted by `predicted`) or by its number.
   void vertex(int v, const GridPoint& predicted) {
     if (number_[v] < 0) {
+      const GridPoint written = written_point(v, predicted);
+      if (written != grid_[v]) ++state_.vertices_off_nearest;
+      grid_[v] = written;
       symbol(new_vertex);
       state_.mesh_values.write(out_, grid_[v], predicted, /*by_axis=*/true);  // the writer writes version 5
       repeats_.add_vertex(count_, grid_[v]);
@@ -358,6 +389,7 @@ class TraversalEncoder {
   const TriangleMesh& mesh_;
   const std::vector<int>* members_;
   CodingState& state_;
+  double q_;
   int last_member_ = 0;
   bool member_after_other_ = false;
   std::vector<GridPoint> grid_;

@@ -28,6 +28,19 @@ void VertexValues::remember(int axis, int64_t value, int64_t place) {
   if (!listed && sorted.size() < value_table_limit) sorted.insert(sorted.begin() + place, value);
 }
 
+double VertexValues::estimated_bits(const GridPoint& p, const GridPoint& predicted) const {
+  double bits = 0;
+  for (int k = 0; k < 3; ++k) {
+    const int64_t place = place_of(sorted_[k], p[k]);
+    const bool listed =
+        place < static_cast<int64_t>(sorted_[k].size()) && sorted_[k][static_cast<size_t>(place)] == p[k];
+    const double off = listed ? static_cast<double>(std::abs(place - place_of(sorted_[k], predicted[k])))
+                              : static_cast<double>(std::abs(p[k] - predicted[k]));
+    bits += (listed ? 1.0 : 3.0) + 2.0 * std::log2(1.0 + off);
+  }
+  return bits;
+}
+
 void VertexValues::write(ByteWriter& out, const GridPoint& p, const GridPoint& predicted, bool by_axis) {
   GridPoint place;
   uint8_t known = 0;

@@ -28,6 +28,9 @@ class VertexValues {
  public:
   // `by_axis` (format version 4 on): each axis's first byte of a rank or difference in its own context.
   void write(ByteWriter& out, const GridPoint& p, const GridPoint& predicted, bool by_axis);
+  // About how many bits write would spend on p: a listed value by its rank's distance from the
+  // prediction's, another by its difference (a varsint's growth, not the entropy coder's models).
+  double estimated_bits(const GridPoint& p, const GridPoint& predicted) const;
   // Refuses (PayloadError) a rank outside the table and a coordinate beyond 2^52 steps.
   GridPoint read(ByteReader& in, const GridPoint& predicted, bool by_axis);
 

@@ -175,6 +175,8 @@ struct SceneEncoder {
     CodingState fresh;
     fresh.trim_extrapolation = state.trim_extrapolation;
     fresh.mesh_periods = state.mesh_periods;
+    fresh.free_radius = state.free_radius;
+    fresh.locked_points = state.locked_points;
     fresh.trim_knot_removal = state.trim_knot_removal;
     fresh.periods = state.periods;
     geometry(bytes, s.geometry, geometry_kind(s.geometry), world_scale, fresh, false);
@@ -281,6 +283,7 @@ struct EncodingChoice {
   bool decimal_grid = false;        // the step is decimal_step of the largest the bound allows
   bool mesh_periods = true;         // traversal-coded meshes may take a period (cnb_mesh_period.hpp)
   bool trim_knot_removal = true;    // trimming curves may lose their spare knots (cnb_quantisation.hpp)
+  bool free_points = false;         // mesh vertices may take a cheaper grid point within the bound
 };
 
 std::string encode(const Scene& scene, const CnbOptions& options, const EncodingChoice& choice,
@@ -309,8 +312,16 @@ std::string encode(const Scene& scene, const CnbOptions& options, const Encoding
   encoder.state.piece_copies = choice.piece_copies;
   encoder.state.mesh_periods = choice.mesh_periods;
   encoder.state.trim_knot_removal = choice.trim_knot_removal;
+  std::unordered_set<GridPoint, GridPointHash> locked;
+  if (choice.free_points) {
+    for (const auto& g : shared_grid_points(scene, q)) locked.insert(g);
+    encoder.state.locked_points = &locked;
+    encoder.state.free_radius = r.point_bound / (q * largest_world_scale(scene));
+  }
   encoder.node(scene.root, Eigen::Affine3d::Identity());
   r.periodic_meshes = encoder.state.periodic_meshes;
+  r.vertices_off_nearest = encoder.state.vertices_off_nearest;
+  r.traversal_meshes = encoder.state.traversal_meshes;
   // The scene header goes first; it states the bound, known once every face's trim grid is chosen.
   ByteWriter header;
   header.text(scene.unit.name);
@@ -380,6 +391,11 @@ std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteRep
   if (best_report.piece_copies > 0) {
     other_choice = choice;
     other_choice.piece_copies = false;
+    try_other();
+  }
+  if (best_report.traversal_meshes > 0 && options.free_mesh_points) {
+    other_choice = choice;
+    other_choice.free_points = true;
     try_other();
   }
   if (best_report.periodic_meshes > 0) {  // a period can mispredict more than it predicts

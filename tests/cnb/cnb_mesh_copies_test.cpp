@@ -62,6 +62,7 @@ Written round_trip(const std::vector<TriangleMesh>& meshes) {
     scene.root.shapes.push_back({"mesh " + std::to_string(k), meshes[k], Colour{0.1 * k, 0.2, 0.3}});
   CnbOptions options;
   options.max_deviation = 0.01;
+  options.free_mesh_points = false;  // every vertex where rounding puts it: compared by position
   Written w;
   w.bytes = write_cnb(scene, options, &w.report);
   w.decoded = read_cnb(w.bytes, "copies.cnb");

@@ -9,9 +9,11 @@
 #include <array>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <numbers>
 #include <random>
 
+#include "analysis/mesh/count_boundary_edges.hpp"
 #include "analysis/mesh/scene_triangles.hpp"
 #include "analysis/mesh/oriented_triangle_keys.hpp"
 #include "analysis/mesh/weld_exact.hpp"
@@ -45,9 +47,12 @@ struct Decoded {
   double step = 0;
 };
 
+// Every vertex at its nearest grid point (CnbOptions::free_mesh_points off), so that the triangles can be
+// compared by position.
 Decoded round_trip(const TriangleMesh& mesh, double deviation) {
   CnbOptions options;
   options.max_deviation = deviation;
+  options.free_mesh_points = false;
   CnbWriteReport report;
   Decoded d;
   d.bytes = write_cnb(scene_of(mesh), options, &report);
@@ -233,17 +238,96 @@ TEST(CnbTraversalMesh, FlatSheetCostsLittle) {
   EXPECT_LT(d.bytes.size(), mesh.triangles.size() / 4);
 }
 
+// A corpus STEP part's certified mesh (welded, without normals) within share·D, D = diagonal_fraction of
+// its diagonal, and the writer's options for it: D, the share for meshes and the mesh's certificate.
+struct CertifiedPartMesh {
+  TriangleMesh mesh;
+  CnbOptions options;
+};
+CertifiedPartMesh certified_part_mesh(const std::string& corpus_path, double diagonal_fraction, double share) {
+  const Scene part = read_step(std::string(CADNURBS_SHARED_DIR) + "/corpus/" + corpus_path).scene;
+  const double d = diagonal_fraction * scene_bounding_box(part).diagonal().norm();
+  CertifiedPartMesh c;
+  c.mesh = weld_exact(scene_triangles(tessellate_to_deviation(flatten_transforms(part), share * d)));
+  c.mesh.corner_normals.clear();
+  c.options.max_deviation = d;
+  c.options.trim_share = share;
+  c.options.mesh_deviation = share * d;
+  return c;
+}
+
+// The distance from each point of `points` to the nearest of `others`, the largest (brute force).
+double largest_nearest_distance(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& others) {
+  double largest = 0;
+  for (const auto& p : points) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& o : others) nearest = std::min(nearest, (o - p).squaredNorm());
+    largest = std::max(largest, std::sqrt(nearest));
+  }
+  return largest;
+}
+
+// Where it codes smaller, a new vertex takes, instead of its nearest grid point, the grid point within the
+// points' bound that lies nearest its prediction in bits: on linkrods.step's certified mesh at 3e-4 of its
+// diagonal (a dense mesh of curved faces, where Draco had been smaller). Every vertex stays within the
+// bound, the triangles and the closed mesh stay as they were.
+TEST(CnbTraversalMesh, VerticesMayTakeACheaperGridPointWithinTheBound) {
+  const auto [mesh, options] = certified_part_mesh("step/linkrods.step", 3e-4, 0.6);
+  const double d = options.max_deviation;
+  CnbWriteReport report;
+  const std::string bytes = write_cnb(scene_of(mesh), options, &report);
+  EXPECT_GT(report.vertices_off_nearest, static_cast<long>(mesh.positions.size() / 10));
+  EXPECT_LE(report.deviation_bound(), d * (1 + 1e-12));
+  const TriangleMesh decoded = std::get<TriangleMesh>(read_cnb(bytes, "linkrods.cnb").root.shapes.at(0).geometry);
+  ASSERT_EQ(decoded.triangles.size(), mesh.triangles.size());
+  ASSERT_EQ(decoded.positions.size(), mesh.positions.size());
+  EXPECT_LE(largest_nearest_distance(mesh.positions, decoded.positions), report.point_bound * (1 + 1e-12));
+  EXPECT_LE(largest_nearest_distance(decoded.positions, mesh.positions), report.point_bound * (1 + 1e-12));
+  // Not all at the nearest grid point: some vertices moved farther than rounding moves them.
+  const TriangleMesh on_grid = mesh_on_grid(mesh, report.point_step);
+  EXPECT_GT(largest_nearest_distance(decoded.positions, on_grid.positions), 0.1 * report.point_step);
+  EXPECT_EQ(count_boundary_edges(weld_exact(decoded)).boundary, count_boundary_edges(mesh).boundary);
+}
+
+// Meshes in different records that share vertices (two sheets of one wavy surface, meeting along a row,
+// in two nodes, so not one group) keep those vertices where rounding puts them: the part does not crack.
+TEST(CnbTraversalMesh, SharedVerticesStayWhereRoundingPutsThem) {
+  const auto sheet = [](int i0, int i1) {
+    TriangleMesh m;
+    const int n = 24;
+    for (int i = i0; i <= i1; ++i)
+      for (int j = 0; j <= n; ++j)
+        m.positions.emplace_back(0.37 * i + 0.05 * std::sin(1.3 * j), 0.41 * j, 0.8 * std::sin(0.31 * i) * std::cos(0.27 * j));
+    const auto at = [&](int i, int j) { return (i - i0) * (n + 1) + j; };
+    for (int i = i0; i < i1; ++i)
+      for (int j = 0; j < n; ++j) {
+        m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    return m;
+  };
+  Scene scene;
+  for (auto [i0, i1] : {std::pair{0, 20}, std::pair{20, 40}}) {
+    SceneNode node;
+    node.shapes.push_back({"sheet", sheet(i0, i1), std::nullopt});
+    scene.root.children.push_back(node);
+  }
+  CnbOptions options;
+  options.max_deviation = 0.02;
+  CnbWriteReport report;
+  const Scene decoded = read_cnb(write_cnb(scene, options, &report), "sheets.cnb");
+  EXPECT_GT(report.vertices_off_nearest, 0);
+  const EdgeCounts original = count_boundary_edges(weld_exact(scene_triangles(scene))),
+                   after = count_boundary_edges(weld_exact(scene_triangles(decoded)));
+  EXPECT_EQ(original.boundary, 2 * 40 + 2 * 24);  // one sheet: the shared row is inside
+  EXPECT_EQ(after.boundary, original.boundary);
+}
+
 // The certified mesh of a corpus part, coded by .cnb and by Draco with the same vertex budget (Draco at
 // its coarsest bits that move no vertex farther than our grid may): .cnb is the smaller.
 TEST(CnbTraversalMesh, SmallerThanDracoOnACorpusPartsCertifiedMesh) {
-  const Scene part = read_step(std::string(CADNURBS_SHARED_DIR) + "/corpus/step/dm1-id-214.stp").scene;
-  const double d = 1e-3 * scene_bounding_box(part).diagonal().norm();
-  TriangleMesh mesh = weld_exact(scene_triangles(tessellate_to_deviation(flatten_transforms(part), 0.5 * d)));
-  mesh.corner_normals.clear();
-  CnbOptions options;
-  options.max_deviation = d;
-  options.trim_share = 0.5;
-  options.mesh_deviation = 0.5 * d;
+  const auto [mesh, options] = certified_part_mesh("step/dm1-id-214.stp", 1e-3, 0.5);
+  const double d = options.max_deviation;
   CnbWriteReport report;
   const std::string ours = write_cnb(scene_of(mesh), options, &report);
   EXPECT_LE(report.deviation_bound(), d * (1 + 1e-12));
