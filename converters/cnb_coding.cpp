@@ -27,10 +27,12 @@ namespace {
 constexpr double kMeshShare = 0.4;
 // Where that share meshed every body, these are tried too: a coarser mesh on a finer grid is smaller on
 // small curved parts (90 KiCad parts at 1 mm, the best of 0.4, 0.6 and 0.8 per part: 73,764 -> 72,063
-// bytes before mesh groups), while 0.6 or 0.8 for all was larger (77,510 and 80,860). 0.5 and 0.7 help
-// dense curved meshes, whose cost turns on the balance of triangles and grid (Ventilator.stp at 3e-4 of its
-// diagonal: 19,326 -> 19,047 bytes; linkrods.step at 1e-4: 5,975 -> 5,902).
-constexpr double kWholeMeshShares[] = {0.5, 0.6, 0.7, 0.8};
+// bytes before mesh groups), while 0.6 or 0.8 for all was larger (77,510 and 80,860). 0.5 and 0.7 as well
+// helped dense curved meshes by about 1.5% (Ventilator.stp at 3e-4 of its diagonal 19,326 -> 19,047 bytes,
+// linkrods.step at 1e-4 5,975 -> 5,902) and 50 DFN and Phoenix parts at 0.01 mm by 0.04%, for twice the
+// CPU of a wholly meshed part (io1-tu-203.stp at 1 mm, with the coarser grids below at up to 1.4x): not
+// tried.
+constexpr double kWholeMeshShares[] = {0.6, 0.8};
 // They are tried, too, where the NURBS were chosen but a wholly meshed candidate came within this factor:
 // the Phoenix MC 1,5/2-GF MountHole at 0.01 mm codes its NURBS in 3,509 bytes (at 561b8b1), its meshes in
 // 3,732 at 0.4 and in 2,468 at 0.8.
@@ -57,10 +59,11 @@ constexpr double kFinerGridStep = 0.01;
 
 // A grid coarser than the worst rounding allows can still keep every vertex within the points' share:
 // the writer then states their largest move as decoded (CnbOptions::measured_point_step). Tried on
-// wholly meshed scenes: steps up to kCoarserGrids·kCoarserGridStep coarser than the worst case's, and
+// wholly meshed scenes: steps up to kCoarserGrids·kCoarserGridStep coarser than the worst case's (to 1.4x
+// cost more CPU and saved nothing more on 50 DFN and Phoenix parts at 0.01 mm), and
 // the decimal steps (1, 2, 2.5 and 5 times a power of ten) up to kCoarsestDecimal times it, on which parts
 // drawn on decimal dimensions keep their corners exactly.
-constexpr int kCoarserGrids = 8;
+constexpr int kCoarserGrids = 4;
 constexpr double kCoarserGridStep = 0.05;
 constexpr double kCoarsestDecimal = 64;
 

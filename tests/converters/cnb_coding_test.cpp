@@ -103,7 +103,7 @@ TEST(CnbCoding, AWhollyMeshedPartTakesTheShareThatCodesSmallest) {
   const Scene compact = compact_scene(screw, written_tolerance(screw, 0));
   const CnbCoding coding = cnb_coding(compact, 1.0, &screw);
   EXPECT_EQ(coding.choice.bodies_kept, 0);
-  // 165 bytes at 0.6 (meshed within 0.563 mm) on a grid coarser than the worst rounding allows
+  // 167 bytes at 0.6 (meshed within 0.563 mm) on a grid coarser than the worst rounding allows
   // (coarser_steps), where the worst rounding's grids gave 169 at 0.8.
   EXPECT_EQ(coding.options.trim_share, 0.6);
   EXPECT_GT(coding.options.measured_point_step, cnb::point_step(coding.scene, coding.options));
@@ -111,7 +111,7 @@ TEST(CnbCoding, AWhollyMeshedPartTakesTheShareThatCodesSmallest) {
   EXPECT_LE(coding.written.point_bound, 0.4);
   EXPECT_GT(coding.choice.certified_deviation, 0.5);
   EXPECT_LE(coding.choice.certified_deviation, 0.6);
-  EXPECT_LE(coding.bytes.size(), 165u);
+  EXPECT_LE(coding.bytes.size(), 167u);
   EXPECT_LE(coding.written.deviation_bound(), 1.0);
   EXPECT_EQ(coding.bytes.size(), coding.choice.bytes());
 }
