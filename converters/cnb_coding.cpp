@@ -71,7 +71,7 @@ constexpr double kCoarsestDecimal = 64;
 // the worst case's step: each as the float32 the writer stores.
 std::vector<double> coarser_steps(const Scene& scene, const CnbOptions& options) {
   const double q = cnb::point_step(scene, options);
-  const double share = (1.0 - options.trim_share) * options.quantisation_scale * options.max_deviation;
+  const double share = cnb::point_share(options);
   std::vector<double> candidates;
   for (int i = 1; i <= kCoarserGrids; ++i) candidates.push_back(q * (1.0 + kCoarserGridStep * i));
   for (double decade = std::pow(10.0, std::floor(std::log10(q))); decade <= kCoarsestDecimal * q; decade *= 10.0)
@@ -209,38 +209,32 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exac
     c.options.trim_share = share;
     c.options.mesh_deviation = choice.certified_deviation;
     c.bytes = write_cnb(c.scene, c.options, &c.written);
-    const CnbOptions at_step = c.options;
     if (mesh_where_cheaper && count_entities(c.scene).trimmed_surfaces == 0) {
       const CnbOptions first = c.options;
+      // Writes at `options` and keeps the file if smaller; false where the writer refuses them.
+      const auto keep_if_smaller = [&](const CnbOptions& options) {
+        CnbWriteReport written;
+        std::string bytes;
+        try {
+          bytes = write_cnb(c.scene, options, &written);
+        } catch (const std::invalid_argument&) {
+          return false;
+        }
+        if (bytes.size() < c.bytes.size()) c.bytes = std::move(bytes), c.options = options, c.written = written;
+        return true;
+      };
       for (int i = 1; i <= kFinerGrids; ++i) {
         CnbOptions finer = first;
         finer.quantisation_scale *= 1.0 - kFinerGridStep * i;
-        CnbWriteReport written;
-        std::string bytes;
-        try {
-          bytes = write_cnb(c.scene, finer, &written);
-        } catch (const std::invalid_argument&) {
-          break;  // a grid too fine for the model's coordinates; finer ones are too
-        }
-        if (bytes.size() < c.bytes.size()) c.bytes = std::move(bytes), c.options = finer, c.written = written;
+        if (!keep_if_smaller(finer)) break;  // a grid too fine for the model's coordinates; finer ones are too
       }
-      c.choice.set_bytes(c.bytes.size());
-    }
-    // Coarser grids keep the same bound on every point's move. Not tried where trimmed surfaces are kept:
-    // their writes cost seconds each (capping-end.step at 0.01 mm: 78 CPU-seconds became over 200 with
-    // them), and a sewn file's faces join as the sewing scale's check saw them on the step itself.
-    if (mesh_where_cheaper && count_entities(c.scene).trimmed_surfaces == 0) {
-      for (double step : coarser_steps(c.scene, at_step)) {
-        CnbOptions coarser = at_step;
+      // Coarser grids keep the same bound on every point's move. Not tried where trimmed surfaces are
+      // kept: their writes cost seconds each (capping-end.step at 0.01 mm: 78 CPU-seconds became over 200
+      // with them), and a sewn file's faces join as the sewing scale's check saw them on the step itself.
+      for (double step : coarser_steps(c.scene, first)) {
+        CnbOptions coarser = first;
         coarser.measured_point_step = step;
-        CnbWriteReport written;
-        std::string bytes;
-        try {
-          bytes = write_cnb(c.scene, coarser, &written);
-        } catch (const std::invalid_argument&) {
-          continue;
-        }
-        if (bytes.size() < c.bytes.size()) c.bytes = std::move(bytes), c.options = coarser, c.written = written;
+        keep_if_smaller(coarser);
       }
       c.choice.set_bytes(c.bytes.size());
     }

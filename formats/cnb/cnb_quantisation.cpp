@@ -23,10 +23,13 @@ void check(const CnbOptions& o) {
 }
 }  // namespace
 
+double point_share(const CnbOptions& options) {
+  return (1.0 - options.trim_share) * options.quantisation_scale * options.max_deviation;
+}
+
 double point_step(const Scene& scene, const CnbOptions& options) {
   check(options);
-  return 2.0 * (1.0 - options.trim_share) * options.max_deviation * options.quantisation_scale /
-         (std::sqrt(3.0) * largest_world_scale(scene));
+  return 2.0 * point_share(options) / (std::sqrt(3.0) * largest_world_scale(scene));
 }
 
 double decimal_step(double largest) {

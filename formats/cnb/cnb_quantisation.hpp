@@ -28,6 +28,8 @@ namespace cadnurbs::cnb {
 
 // q as above. Throws std::invalid_argument for D, trim_share or quantisation_scale out of range.
 double point_step(const Scene& scene, const CnbOptions& options);
+// The points' share of D, (1 - trim_share)·quantisation_scale·D: the world move no point may exceed.
+double point_share(const CnbOptions& options);
 
 // The largest world move of a control point or vertex of `scene` on the grid of step q: each coordinate
 // decodes as round(x/q)·q (the writer's on_grid), and each move is taken through its shape's world

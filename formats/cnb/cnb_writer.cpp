@@ -300,7 +300,7 @@ std::string encode(const Scene& scene, const CnbOptions& options, const Encoding
   r.point_bound = q * std::sqrt(3.0) / 2.0 * largest_world_scale(scene);
   if (options.measured_point_step > 0) {
     r.point_bound = largest_point_move(scene, q);
-    const double share = (1.0 - options.trim_share) * options.quantisation_scale * options.max_deviation;
+    const double share = point_share(options);
     if (!(r.point_bound <= share))
       throw std::invalid_argument("cnb: on a grid of step " + std::to_string(q) + " points move up to " +
                                   std::to_string(r.point_bound) + ", more than their share of D (" +
