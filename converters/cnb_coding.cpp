@@ -268,6 +268,7 @@ CnbCoding cnb_coding(const Scene& scene, double max_deviation, const Scene* exac
     for (double other : other_shares) {
       Contender c{{}, {}, other};
       c.scene = cheapest(other, c.choice, true);
+      c.choice.as_is_bytes = first.as_is_bytes;  // not costed at this share: the NURBS as the first share wrote them
       if (c.choice.bodies_kept == 0 && c.choice.bodies_meshed > 0) contenders.push_back(std::move(c));
     }
   size_t best = 0;

@@ -29,6 +29,7 @@ struct CodingState {
   bool trim_extrapolation = true;  // writer only: whether faces may take the extrapolating trim predictor
   bool piece_copies = true;        // writer only: whether mesh groups may code pieces as copies
   bool mesh_periods = true;        // writer only: whether traversal-coded meshes may take a period
+  bool mesh_predictors = true;     // writer only: whether traversal-coded meshes name a predictor per vertex
   bool trim_knot_removal = true;   // writer only: whether trimming curves may lose their spare knots
   PeriodCache* periods = nullptr;  // writer only: periods found by earlier codings of the same meshes
   int periodic_meshes = 0;         // writer only: the traversal-coded meshes written with a period

@@ -31,6 +31,10 @@ struct CnbOptions {
   // Whether a traversal-coded mesh's vertex may be written at another grid point than its nearest, within
   // the points' bound, where that codes smaller (CodingState::free_radius); false: each at its nearest.
   bool free_mesh_points = true;
+  // Whether a traversal-coded mesh's new vertices may each name the cheapest of the vertex predictors
+  // (cnb_vertex_predictors.hpp); the writer also writes the file without and keeps the smaller. False: the
+  // parallelogram (or the period) predicts every vertex.
+  bool vertex_predictors = true;
   // The entropy stage: the smallest of deflate, the adaptive arithmetic coder with every model starting at
   // ½, the same coder starting from the coder prior (cnb_coder_prior.hpp), and the coder whose models mix
   // two rates of adaptation, from the prior (adaptive_arithmetic_coder.hpp); or one of them.

@@ -11,9 +11,12 @@ int continuation_context(Field f) { return 2 * static_cast<int>(f) + 1; }
 int float_context(int byte_index) { return 2 * field_count + byte_index; }
 constexpr int first_symbol_context = 2 * field_count + 8;
 constexpr int first_axis_context = first_symbol_context + mesh_symbol_count;
+constexpr int first_predictor_context = first_axis_context + 4;
 }  // namespace
 
 int symbol_context(uint8_t previous) { return first_symbol_context + previous; }
+
+int predictor_context(uint8_t previous) { return first_predictor_context + previous; }
 
 int axis_context(Field field, int axis) {
   if (axis == 0) return first_context(field);

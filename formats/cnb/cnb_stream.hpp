@@ -21,14 +21,16 @@ enum class Field : uint8_t {
 };
 // The format version writers write (docs/cnb.md); readers pass on the file's, since the contexts
 // bytes take depend on it.
-constexpr uint8_t format_version = 7;
+constexpr uint8_t format_version = 8;
 
 constexpr int field_count = 14;
 // Contexts: 2 per field (first / continuation byte of a varint), 8 for the bytes of a float64, then (format
 // version 4 on) one per mesh symbol for the symbol after it, and the first byte of a vertex's rank and of
-// its difference from the prediction on axes 1 and 2 (axis 0 keeps the field's own).
+// its difference from the prediction on axes 1 and 2 (axis 0 keeps the field's own); then (version 8 on)
+// one per vertex predictor for the predictor after it.
 constexpr int mesh_symbol_count = 7;
-constexpr int context_count = 2 * field_count + 8 + mesh_symbol_count + 4;
+constexpr int vertex_predictor_contexts = 4;
+constexpr int context_count = 2 * field_count + 8 + mesh_symbol_count + 4 + vertex_predictor_contexts;
 
 // Whether `context` is one of a float64's 8 (after the fields' own 2 each).
 constexpr bool float64_context(int context) { return context >= 2 * field_count && context < 2 * field_count + 8; }
@@ -37,6 +39,9 @@ int symbol_context(uint8_t previous);
 // The context of the first byte of a vertex coordinate's rank (Field::mesh_rank) or difference
 // (Field::mesh_point) on `axis`, version 4 on; axis 0 is the field's first context.
 int axis_context(Field field, int axis);
+// The context of a new vertex's predictor that follows `previous` (< vertex_predictor_contexts), version 8
+// on (cnb_vertex_predictors.hpp).
+int predictor_context(uint8_t previous);
 
 // A damaged or impossible payload: where (byte offset in the decoded payload) and why.
 struct PayloadError : std::runtime_error {

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -26,6 +27,7 @@
 #include "formats/cnb/cnb_geometry.hpp"
 #include "formats/cnb/cnb_mesh_period.hpp"
 #include "formats/cnb/cnb_numbers.hpp"
+#include "formats/cnb/cnb_vertex_predictors.hpp"
 #include "formats/cnb/cnb_vertex_values.hpp"
 
 namespace cadnurbs::cnb {
@@ -207,9 +209,24 @@ int read_member(ByteReader& in, int predicted, int member_count, bool& after_oth
   return code - 1;
 }
 
-// Where the parallelogram of the gate's triangle (from, to, apex) puts the far vertex.
-GridPoint parallelogram(const GridPoint& from, const GridPoint& to, const GridPoint& apex) {
-  return {from[0] + to[0] - apex[0], from[1] + to[1] - apex[1], from[2] + to[2] - apex[2]};
+// The border's polyline next to gate g (cnb_vertex_predictors.hpp): the two points after its end along
+// the edges after it (`after`), or before its start along the edges before it; none where the gate's list
+// holds fewer than three edges.
+std::optional<BorderChain> border_chain(Border& border, int g, const std::vector<GridPoint>& grid, bool after) {
+  const int first = after ? border[g].next : border[g].previous;
+  if (first == g) return std::nullopt;
+  const int second = after ? border[first].next : border[first].previous;
+  if (second == g) return std::nullopt;
+  if (after) return BorderChain{grid[border[first].to], grid[border[second].to]};
+  return BorderChain{grid[border[first].from], grid[border[second].from]};
+}
+
+// The predictions of the vertex beyond gate g (version 8 on).
+std::array<GridPoint, vertex_predictor_count> gate_predictions(Border& border, int g,
+                                                               const std::vector<GridPoint>& grid) {
+  const BorderEdge& gate = border[g];
+  return vertex_predictions(grid[gate.from], grid[gate.to], grid[gate.apex], border_chain(border, g, grid, true),
+                            border_chain(border, g, grid, false));
 }
 
 class TraversalEncoder {
@@ -236,6 +253,7 @@ class TraversalEncoder {
     for (int k = 0; k < 3; ++k) out_.varsint(period[k], Field::point);
     repeats_ = PeriodPredictor(period);
     if (repeats_.active()) ++state_.periodic_meshes;
+    out_.byte(state_.mesh_predictors ? 1 : 0);  // (version 8) whether each new vertex names its predictor
     visited_.assign(triangles, false);
     number_.assign(mesh_.positions.size(), -1);
     size_t first_unvisited = 0;
@@ -315,18 +333,52 @@ class TraversalEncoder {
   // Names vertex v: new (its position predicted by `predicted`) or by its number.
   void vertex(int v, const GridPoint& predicted) {
     if (number_[v] < 0) {
-      const GridPoint written = written_point(v, predicted);
-      if (written != grid_[v]) ++state_.vertices_off_nearest;
-      grid_[v] = written;
-      symbol(new_vertex);
-      state_.mesh_values.write(out_, grid_[v], predicted, /*by_axis=*/true);  // the writer writes version 5
-      repeats_.add_vertex(count_, grid_[v]);
-      number_[v] = count_++;
-      state_.last_mesh_vertex = grid_[v];
+      new_vertex_at(v, written_point(v, predicted), predicted, -1);
     } else {
       symbol(old_vertex);
       out_.varuint(static_cast<uint64_t>(count_ - 1 - number_[v]), Field::index);
     }
+  }
+
+  // Names vertex v beyond a gate whose predictions are `predictions` (version 8): a new one at whichever
+  // prediction and grid point cost fewest estimated bits, the predictor's symbol included.
+  void predicted_vertex(int v, const std::array<GridPoint, vertex_predictor_count>& predictions) {
+    if (number_[v] >= 0) return vertex(v, predictions[0]);
+    int best = 0;
+    GridPoint best_point{};
+    double best_bits = 0;
+    for (int k = 0; k < vertex_predictor_count; ++k) {
+      const GridPoint written = written_point(v, predictions[k]);
+      const double bits = state_.mesh_values.estimated_bits(written, predictions[k]) + predictor_bits(k);
+      if (k == 0 || bits < best_bits || (bits == best_bits && k == previous_predictor_))
+        best = k, best_point = written, best_bits = bits;
+    }
+    new_vertex_at(v, best_point, predictions[best], best);
+  }
+
+  // About what predictor k costs after the previous one: its share of the choices made after that one so
+  // far in this mesh (each counted from 1).
+  double predictor_bits(int k) const {
+    const auto& after = predictor_counts_[previous_predictor_];
+    double total = 0;
+    for (double c : after) total += c;
+    return -std::log2(after[k] / total);
+  }
+
+  // Writes new vertex v at grid point `written`, against `predicted`, after its predictor (-1: none).
+  void new_vertex_at(int v, const GridPoint& written, const GridPoint& predicted, int predictor) {
+    if (written != grid_[v]) ++state_.vertices_off_nearest;
+    grid_[v] = written;
+    symbol(new_vertex);
+    if (predictor >= 0) {
+      out_.byte_in(static_cast<uint8_t>(predictor), predictor_context(previous_predictor_));
+      predictor_counts_[previous_predictor_][predictor] += 1;
+      previous_predictor_ = static_cast<uint8_t>(predictor);
+    }
+    state_.mesh_values.write(out_, grid_[v], predicted, /*by_axis=*/true);  // the writer writes version 5 on
+    repeats_.add_vertex(count_, grid_[v]);
+    number_[v] = count_++;
+    state_.last_mesh_vertex = grid_[v];
   }
 
   // The member of triangle t, predicted as `predicted` (nothing outside a group).
@@ -374,11 +426,15 @@ class TraversalEncoder {
                 : closes_before               ? closes_previous
                 : closes_after                ? closes_next
                                               : new_vertex;
-    if (s == new_vertex)
-      vertex(v, repeats_.predict(grid_[gate.from], grid_[gate.to], grid_[gate.apex])
-                    .value_or(parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex])));
-    else
+    if (s == new_vertex) {
+      const auto by_period = repeats_.predict(grid_[gate.from], grid_[gate.to], grid_[gate.apex]);
+      if (by_period || !state_.mesh_predictors)
+        vertex(v, by_period.value_or(parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex])));
+      else
+        predicted_vertex(v, gate_predictions(border_, g, grid_));
+    } else {
       symbol(s);
+    }
     repeats_.add_triangle(number_[gate.to], number_[gate.from], number_[v]);
     const int m = member(far / 3, gate.member);
     const BorderEdge left{gate.from, v, gate.to, to_apex, 0, 0, m}, right{v, gate.to, gate.from, apex_to, 0, 0, m};
@@ -399,6 +455,9 @@ class TraversalEncoder {
   int count_ = 0;
   size_t written_ = 0;
   uint8_t previous_ = new_vertex;
+  uint8_t previous_predictor_ = 0;
+  std::array<std::array<double, vertex_predictor_count>, vertex_predictor_count> predictor_counts_{
+      {{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}}};
   Border border_;
   PeriodPredictor repeats_{{0, 0, 0}};
 };
@@ -409,7 +468,8 @@ class TraversalDecoder {
   TraversalDecoder(ByteReader& in, double q, CodingState& state, int member_count = 0,
                    std::vector<int>* members = nullptr)
       : in_(in), q_(q), values_(state.mesh_values), last_(state.last_mesh_vertex), member_count_(member_count),
-        members_(members), version_4_contexts_(state.version >= 4), period_(state.version >= 5) {}
+        members_(members), version_4_contexts_(state.version >= 4), period_(state.version >= 5),
+        predictor_flag_(state.version >= 8) {}
 
   TriangleMesh decode() {
     vertex_count_ = in_.count(4);
@@ -422,6 +482,12 @@ class TraversalDecoder {
         if (std::abs(static_cast<double>(period[k])) > 0x1p52) in_.fail("mesh period outside the grid's range", at);
       }
       repeats_ = PeriodPredictor(period);
+    }
+    if (predictor_flag_) {
+      const size_t at = in_.offset();
+      const uint8_t flag = in_.byte();
+      if (flag > 1) in_.fail("vertex predictor flag " + std::to_string(flag) + " above 1", at);
+      predictors_ = flag == 1;
     }
     grid_.reserve(vertex_count_);
     mesh_.triangles.reserve(triangles);
@@ -515,13 +581,25 @@ class TraversalDecoder {
     else if (uses_after)
       v = border_[gate.next].to;
     else
-      v = vertex(symbol, at,
-                 repeats_.predict(grid_[gate.from], grid_[gate.to], grid_[gate.apex])
-                     .value_or(parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex])));
+      v = vertex(symbol, at, predicted_beyond(g, symbol));
     const int m = triangle(gate.to, gate.from, v, at, gate.member);
     repeats_.add_triangle(gate.to, gate.from, v);
     const BorderEdge left{gate.from, v, gate.to, -1, 0, 0, m}, right{v, gate.to, gate.from, -1, 0, 0, m};
     border_.advance(symbol, g, left, right, v);
+  }
+
+  // Where the vertex beyond gate g is predicted: by the period, else (where the mesh names predictors and
+  // the vertex is new) by the predictor read here, else by the parallelogram.
+  GridPoint predicted_beyond(int g, uint8_t symbol) {
+    const BorderEdge& gate = border_[g];
+    const auto by_period = repeats_.predict(grid_[gate.from], grid_[gate.to], grid_[gate.apex]);
+    if (by_period) return *by_period;
+    if (!predictors_ || symbol != new_vertex) return parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex]);
+    const size_t at = in_.offset();
+    const uint8_t predictor = in_.byte_in(predictor_context(previous_predictor_));
+    if (predictor >= vertex_predictor_count) in_.fail("unknown vertex predictor " + std::to_string(predictor), at);
+    previous_predictor_ = predictor;
+    return gate_predictions(border_, g, grid_)[predictor];
   }
 
   // Whether the loop through edge g holds fewer than n distinct edges.
@@ -549,6 +627,9 @@ class TraversalDecoder {
   bool member_after_other_ = false;
   bool version_4_contexts_;  // symbols by the one before, coordinates by axis
   bool period_;              // version 5 on: the mesh's period, and vertices predicted by it
+  bool predictor_flag_;      // version 8 on: a flag says whether new vertices name their predictor
+  bool predictors_ = false;
+  uint8_t previous_predictor_ = 0;
   PeriodPredictor repeats_{{0, 0, 0}};
 };
 

@@ -175,6 +175,7 @@ struct SceneEncoder {
     CodingState fresh;
     fresh.trim_extrapolation = state.trim_extrapolation;
     fresh.mesh_periods = state.mesh_periods;
+    fresh.mesh_predictors = state.mesh_predictors;
     fresh.free_radius = state.free_radius;
     fresh.locked_points = state.locked_points;
     fresh.trim_knot_removal = state.trim_knot_removal;
@@ -284,6 +285,7 @@ struct EncodingChoice {
   bool mesh_periods = true;         // traversal-coded meshes may take a period (cnb_mesh_period.hpp)
   bool trim_knot_removal = true;    // trimming curves may lose their spare knots (cnb_quantisation.hpp)
   bool free_points = false;         // mesh vertices may take a cheaper grid point within the bound
+  bool mesh_predictors = true;      // mesh vertices may name their predictor (cnb_vertex_predictors.hpp)
 };
 
 std::string encode(const Scene& scene, const CnbOptions& options, const EncodingChoice& choice,
@@ -311,6 +313,7 @@ std::string encode(const Scene& scene, const CnbOptions& options, const Encoding
   encoder.state.trim_extrapolation = choice.trim_extrapolation;
   encoder.state.piece_copies = choice.piece_copies;
   encoder.state.mesh_periods = choice.mesh_periods;
+  encoder.state.mesh_predictors = choice.mesh_predictors;
   encoder.state.trim_knot_removal = choice.trim_knot_removal;
   std::unordered_set<GridPoint, GridPointHash> locked;
   if (choice.free_points) {
@@ -370,6 +373,7 @@ std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteRep
   // Copies of pins drawn a decimal pitch apart need a decimal grid (decimal_step) to stay copies after
   // rounding, which a finer grid makes dearer elsewhere: tried where the file holds a mesh.
   EncodingChoice choice, other_choice;
+  choice.mesh_predictors = other_choice.mesh_predictors = options.vertex_predictors;
   MeshAnalyses analyses;
   CnbWriteReport best_report, other_report;
   std::string best = encode(scene, options, choice, analyses, best_report), other;
@@ -396,6 +400,11 @@ std::string write_cnb(const Scene& scene, const CnbOptions& options, CnbWriteRep
   if (best_report.traversal_meshes > 0 && options.free_mesh_points) {
     other_choice = choice;
     other_choice.free_points = true;
+    try_other();
+  }
+  if (best_report.traversal_meshes > 0 && choice.mesh_predictors) {  // a small mesh may not repay the names
+    other_choice = choice;
+    other_choice.mesh_predictors = false;
     try_other();
   }
   if (best_report.periodic_meshes > 0) {  // a period can mispredict more than it predicts

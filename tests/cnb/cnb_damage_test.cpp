@@ -52,7 +52,7 @@ TEST(CnbDamage, EveryFlippedByteIsRefused) {
     std::string expected;
     if (at < 4) expected = name + ": byte " + std::to_string(at) + ": not a .cnb file (the magic number is \\x89CNB)";
     else if (at == 4) expected = name + ": byte 4: version " + std::to_string(cnb::format_version ^ 0x24) +
-                            " is not one this reader knows (1 to 7)";
+                            " is not one this reader knows (1 to " + std::to_string(cnb::format_version) + ")";
     else expected = crc_message;
     ASSERT_EQ(error_of(damaged), expected) << "byte " << at;
   }
@@ -233,6 +233,7 @@ void one_triangle_traversal(cnb::ByteWriter& w) {
   w.varuint(3, cnb::Field::count);
   w.varuint(1, cnb::Field::count);
   for (int k = 0; k < 3; ++k) w.varsint(0, cnb::Field::point);
+  w.byte(0);  // (version 8) no vertex predictors named
   for (int v = 0; v < 3; ++v) {
     w.byte(0);  // symbol: a new vertex
     w.byte(0);  // no axis holds a listed value
@@ -314,6 +315,47 @@ TEST(CnbDamage, MeshGroupsThatCannotBeRight) {
     damaged.varuint(0, cnb::Field::count);
     EXPECT_EQ(error_of(cnb::pack(damaged, CnbOptions::Coder::deflate, nullptr)),
               name + ": decoded byte " + std::to_string(payload.size() - 1) + ": member 2 of a group of 2 meshes");
+  }
+}
+
+// A traversal-coded mesh's predictor flag above 1, or a new vertex naming a fifth predictor (version 8).
+TEST(CnbDamage, VertexPredictorsThatCannotBeRight) {
+  // A shape of two triangles: `flag`, the starting triangle's three vertices, then a new vertex beyond its
+  // first edge that names `predictor`.
+  const auto error_for = [](uint8_t flag, uint8_t predictor) {
+    cnb::ByteWriter w = scene_header_and_root();
+    w.varuint(1, cnb::Field::count);  // the node's shapes
+    w.byte(5);
+    w.text("");
+    w.varuint(4, cnb::Field::count);
+    w.varuint(2, cnb::Field::count);
+    for (int k = 0; k < 3; ++k) w.varsint(0, cnb::Field::point);
+    const size_t flag_at = w.bytes().size();
+    w.byte(flag);
+    for (int v = 0; v < 3; ++v) {
+      w.byte_in(0, cnb::symbol_context(0));
+      w.byte(0, cnb::Field::mesh_axes);
+      for (int k = 0; k < 3; ++k) w.varsint_in(k == v ? 1 : 0, cnb::Field::mesh_point, cnb::axis_context(cnb::Field::mesh_point, k));
+    }
+    w.byte_in(0, cnb::symbol_context(0));
+    const size_t predictor_at = w.bytes().size();
+    w.byte_in(predictor, cnb::predictor_context(0));
+    w.byte(0, cnb::Field::mesh_axes);
+    for (int k = 0; k < 3; ++k) w.varsint_in(0, cnb::Field::mesh_point, cnb::axis_context(cnb::Field::mesh_point, k));
+    w.varuint(0, cnb::Field::count);  // children
+    return std::tuple{flag_at, predictor_at, error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr))};
+  };
+  {
+    const auto [flag_at, predictor_at, error] = error_for(1, 3);
+    EXPECT_EQ(error, "(read without error)");
+  }
+  {
+    const auto [flag_at, predictor_at, error] = error_for(2, 0);
+    EXPECT_EQ(error, name + ": decoded byte " + std::to_string(flag_at) + ": vertex predictor flag 2 above 1");
+  }
+  {
+    const auto [flag_at, predictor_at, error] = error_for(1, 4);
+    EXPECT_EQ(error, name + ": decoded byte " + std::to_string(predictor_at) + ": unknown vertex predictor 4");
   }
 }
 

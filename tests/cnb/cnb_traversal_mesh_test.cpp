@@ -153,13 +153,14 @@ TEST(CnbTraversalMesh, UnusedVerticesAreNotKeptAndNormalsKeepThePlainCoding) {
 
 // Version 3 coded mesh symbols in two contexts (after a new vertex, after anything else) and each vertex
 // coordinate's first byte in its field's one; version 4 by the symbol before and by axis. A version 3 file,
-// made from a version 5 payload with its contexts mapped back and the mesh's period (version 5; zero for a
-// torus whose points are jittered off its symmetries) left out, still reads to the same mesh; read as
-// version 4, the same bytes do not.
+// made from a version 8 payload without vertex predictors, with its contexts mapped back and the mesh's
+// period (version 5; zero for a torus whose points are jittered off its symmetries) and predictor flag
+// (version 8) left out, still reads to the same mesh; read as version 4, the same bytes do not.
 TEST(CnbTraversalMesh, VersionThreeContextsStillRead) {
   CnbOptions options;
   options.max_deviation = 0.01;
   options.coder = CnbOptions::Coder::arithmetic;
+  options.vertex_predictors = false;
   TriangleMesh jittered = torus(24, 12);
   std::mt19937 random(5);
   for (auto& p : jittered.positions)
@@ -171,11 +172,16 @@ TEST(CnbTraversalMesh, VersionThreeContextsStillRead) {
   std::string bytes;
   std::vector<uint8_t> kept;
   for (size_t i = 0; i < payload.bytes.size(); ++i)
-    if (payload.contexts[i] == period.contexts()[0])
+    if (payload.contexts[i] == period.contexts()[0]) {
       ASSERT_EQ(payload.bytes[i], 0) << "the jittered torus has no period";
-    else
+      if (i + 1 < payload.bytes.size() && payload.contexts[i + 1] != period.contexts()[0]) {
+        ASSERT_EQ(payload.bytes[i + 1], 0) << "the predictor flag follows the period: none named";
+        ++i;
+      }
+    } else {
       bytes.push_back(payload.bytes[i]), kept.push_back(payload.contexts[i]);
-  ASSERT_EQ(bytes.size() + 3, payload.bytes.size());
+    }
+  ASSERT_EQ(bytes.size() + 4, payload.bytes.size());
   payload.bytes = bytes;
   payload.contexts = kept;
   cnb::ByteWriter old_symbol;  // version 3's symbol contexts: after a new vertex, after anything else

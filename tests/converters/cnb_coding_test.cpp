@@ -114,6 +114,10 @@ TEST(CnbCoding, AWhollyMeshedPartTakesTheShareThatCodesSmallest) {
   EXPECT_LE(coding.bytes.size(), 167u);
   EXPECT_LE(coding.written.deviation_bound(), 1.0);
   EXPECT_EQ(coding.bytes.size(), coding.choice.bytes());
+  // The NURBS as they are, costed at the first share only, are still what the report states for them
+  // (not the "not costed" of the other shares' choices: convert printed 18446744073709551615).
+  EXPECT_GT(coding.choice.as_is_bytes, coding.bytes.size());
+  EXPECT_LT(coding.choice.as_is_bytes, 100'000u);
 }
 
 // Where the part's own faces lie farther apart along a shared edge than the meshes' share of D, their meshes
