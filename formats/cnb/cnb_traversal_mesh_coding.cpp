@@ -340,20 +340,18 @@ class TraversalEncoder {
     }
   }
 
-  // Names vertex v beyond a gate whose predictions are `predictions` (version 8): a new one at whichever
-  // prediction and grid point cost fewest estimated bits, the predictor's symbol included.
+  // Names vertex v beyond a gate whose predictions are `predictions` (version 8): a new one by whichever
+  // prediction its nearest grid point costs fewest estimated bits against, the predictor's symbol
+  // included; then at the grid point that prediction codes cheapest (written_point).
   void predicted_vertex(int v, const std::array<GridPoint, vertex_predictor_count>& predictions) {
     if (number_[v] >= 0) return vertex(v, predictions[0]);
     int best = 0;
-    GridPoint best_point{};
     double best_bits = 0;
     for (int k = 0; k < vertex_predictor_count; ++k) {
-      const GridPoint written = written_point(v, predictions[k]);
-      const double bits = state_.mesh_values.estimated_bits(written, predictions[k]) + predictor_bits(k);
-      if (k == 0 || bits < best_bits || (bits == best_bits && k == previous_predictor_))
-        best = k, best_point = written, best_bits = bits;
+      const double bits = state_.mesh_values.estimated_bits(grid_[v], predictions[k]) + predictor_bits(k);
+      if (k == 0 || bits < best_bits || (bits == best_bits && k == previous_predictor_)) best = k, best_bits = bits;
     }
-    new_vertex_at(v, best_point, predictions[best], best);
+    new_vertex_at(v, written_point(v, predictions[best]), predictions[best], best);
   }
 
   // About what predictor k costs after the previous one: its share of the choices made after that one so
