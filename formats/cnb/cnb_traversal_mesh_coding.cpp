@@ -250,10 +250,12 @@ class TraversalEncoder {
     const GridPoint period = !state_.mesh_periods ? GridPoint{0, 0, 0}
                              : state_.periods     ? state_.periods->period_of(used)
                                                   : dominant_period(used);
-    for (int k = 0; k < 3; ++k) out_.varsint(period[k], Field::point);
+    // (Version 8: the first coordinate carries whether each new vertex names its predictor, so that a mesh
+    // without costs what it did before.)
+    const int64_t flag = state_.mesh_predictors ? 1 : 0;
+    for (int k = 0; k < 3; ++k) out_.varsint(k == 0 ? 2 * period[k] + flag : period[k], Field::point);
     repeats_ = PeriodPredictor(period);
     if (repeats_.active()) ++state_.periodic_meshes;
-    out_.byte(state_.mesh_predictors ? 1 : 0);  // (version 8) whether each new vertex names its predictor
     visited_.assign(triangles, false);
     number_.assign(mesh_.positions.size(), -1);
     size_t first_unvisited = 0;
@@ -477,15 +479,13 @@ class TraversalDecoder {
       for (int k = 0; k < 3; ++k) {
         const size_t at = in_.offset();
         period[k] = in_.varsint(Field::point);
+        if (k == 0 && predictor_flag_) {  // 2 x + flag, the flag its lowest bit
+          predictors_ = (period[0] & 1) != 0;
+          period[0] = (period[0] - (predictors_ ? 1 : 0)) / 2;
+        }
         if (std::abs(static_cast<double>(period[k])) > 0x1p52) in_.fail("mesh period outside the grid's range", at);
       }
       repeats_ = PeriodPredictor(period);
-    }
-    if (predictor_flag_) {
-      const size_t at = in_.offset();
-      const uint8_t flag = in_.byte();
-      if (flag > 1) in_.fail("vertex predictor flag " + std::to_string(flag) + " above 1", at);
-      predictors_ = flag == 1;
     }
     grid_.reserve(vertex_count_);
     mesh_.triangles.reserve(triangles);
@@ -625,7 +625,7 @@ class TraversalDecoder {
   bool member_after_other_ = false;
   bool version_4_contexts_;  // symbols by the one before, coordinates by axis
   bool period_;              // version 5 on: the mesh's period, and vertices predicted by it
-  bool predictor_flag_;      // version 8 on: a flag says whether new vertices name their predictor
+  bool predictor_flag_;      // version 8 on: the period's x says too whether new vertices name their predictor
   bool predictors_ = false;
   uint8_t previous_predictor_ = 0;
   PeriodPredictor repeats_{{0, 0, 0}};

@@ -232,8 +232,7 @@ TEST(CnbDamage, RepeatsBeyondTheNumberBudget) {
 void one_triangle_traversal(cnb::ByteWriter& w) {
   w.varuint(3, cnb::Field::count);
   w.varuint(1, cnb::Field::count);
-  for (int k = 0; k < 3; ++k) w.varsint(0, cnb::Field::point);
-  w.byte(0);  // (version 8) no vertex predictors named
+  for (int k = 0; k < 3; ++k) w.varsint(0, cnb::Field::point);  // no period; (version 8) no predictors named
   for (int v = 0; v < 3; ++v) {
     w.byte(0);  // symbol: a new vertex
     w.byte(0);  // no axis holds a listed value
@@ -318,20 +317,18 @@ TEST(CnbDamage, MeshGroupsThatCannotBeRight) {
   }
 }
 
-// A traversal-coded mesh's predictor flag above 1, or a new vertex naming a fifth predictor (version 8).
+// A new vertex naming a fifth predictor (version 8), in a mesh whose period's x is 2 * 0 + 1: predictors named.
 TEST(CnbDamage, VertexPredictorsThatCannotBeRight) {
-  // A shape of two triangles: `flag`, the starting triangle's three vertices, then a new vertex beyond its
-  // first edge that names `predictor`.
-  const auto error_for = [](uint8_t flag, uint8_t predictor) {
+  // A shape of two triangles: the period's x 1 (predictors named), the starting triangle's three vertices,
+  // then a new vertex beyond its first edge that names `predictor`.
+  const auto error_for = [](uint8_t predictor) {
     cnb::ByteWriter w = scene_header_and_root();
     w.varuint(1, cnb::Field::count);  // the node's shapes
     w.byte(5);
     w.text("");
     w.varuint(4, cnb::Field::count);
     w.varuint(2, cnb::Field::count);
-    for (int k = 0; k < 3; ++k) w.varsint(0, cnb::Field::point);
-    const size_t flag_at = w.bytes().size();
-    w.byte(flag);
+    for (int k = 0; k < 3; ++k) w.varsint(k == 0 ? 1 : 0, cnb::Field::point);
     for (int v = 0; v < 3; ++v) {
       w.byte_in(0, cnb::symbol_context(0));
       w.byte(0, cnb::Field::mesh_axes);
@@ -343,18 +340,14 @@ TEST(CnbDamage, VertexPredictorsThatCannotBeRight) {
     w.byte(0, cnb::Field::mesh_axes);
     for (int k = 0; k < 3; ++k) w.varsint_in(0, cnb::Field::mesh_point, cnb::axis_context(cnb::Field::mesh_point, k));
     w.varuint(0, cnb::Field::count);  // children
-    return std::tuple{flag_at, predictor_at, error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr))};
+    return std::pair{predictor_at, error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr))};
   };
   {
-    const auto [flag_at, predictor_at, error] = error_for(1, 3);
+    const auto [predictor_at, error] = error_for(3);
     EXPECT_EQ(error, "(read without error)");
   }
   {
-    const auto [flag_at, predictor_at, error] = error_for(2, 0);
-    EXPECT_EQ(error, name + ": decoded byte " + std::to_string(flag_at) + ": vertex predictor flag 2 above 1");
-  }
-  {
-    const auto [flag_at, predictor_at, error] = error_for(1, 4);
+    const auto [predictor_at, error] = error_for(4);
     EXPECT_EQ(error, name + ": decoded byte " + std::to_string(predictor_at) + ": unknown vertex predictor 4");
   }
 }

@@ -154,8 +154,9 @@ TEST(CnbTraversalMesh, UnusedVerticesAreNotKeptAndNormalsKeepThePlainCoding) {
 // Version 3 coded mesh symbols in two contexts (after a new vertex, after anything else) and each vertex
 // coordinate's first byte in its field's one; version 4 by the symbol before and by axis. A version 3 file,
 // made from a version 8 payload without vertex predictors, with its contexts mapped back and the mesh's
-// period (version 5; zero for a torus whose points are jittered off its symmetries) and predictor flag
-// (version 8) left out, still reads to the same mesh; read as version 4, the same bytes do not.
+// period (version 5; zero for a torus whose points are jittered off its symmetries; in version 8 its x
+// also says that no predictors are named) left out, still reads to the same mesh; read as version 4, the
+// same bytes do not.
 TEST(CnbTraversalMesh, VersionThreeContextsStillRead) {
   CnbOptions options;
   options.max_deviation = 0.01;
@@ -172,16 +173,11 @@ TEST(CnbTraversalMesh, VersionThreeContextsStillRead) {
   std::string bytes;
   std::vector<uint8_t> kept;
   for (size_t i = 0; i < payload.bytes.size(); ++i)
-    if (payload.contexts[i] == period.contexts()[0]) {
-      ASSERT_EQ(payload.bytes[i], 0) << "the jittered torus has no period";
-      if (i + 1 < payload.bytes.size() && payload.contexts[i + 1] != period.contexts()[0]) {
-        ASSERT_EQ(payload.bytes[i + 1], 0) << "the predictor flag follows the period: none named";
-        ++i;
-      }
-    } else {
+    if (payload.contexts[i] == period.contexts()[0])
+      ASSERT_EQ(payload.bytes[i], 0) << "the jittered torus has no period, and names no predictors";
+    else
       bytes.push_back(payload.bytes[i]), kept.push_back(payload.contexts[i]);
-    }
-  ASSERT_EQ(bytes.size() + 4, payload.bytes.size());
+  ASSERT_EQ(bytes.size() + 3, payload.bytes.size());
   payload.bytes = bytes;
   payload.contexts = kept;
   cnb::ByteWriter old_symbol;  // version 3's symbol contexts: after a new vertex, after anything else

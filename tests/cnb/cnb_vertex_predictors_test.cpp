@@ -9,6 +9,8 @@
 #include "formats/cnb/cnb_reader.hpp"
 #include "formats/cnb/cnb_vertex_predictors.hpp"
 #include "formats/cnb/cnb_writer.hpp"
+#include "formats/common/file_io.hpp"
+#include "tests/cnb/cnb_file_header.hpp"
 
 namespace cadnurbs {
 namespace {
@@ -115,6 +117,26 @@ TEST(CnbVertexPredictors, APinsCapsCodeSmallerWithThePredictors) {
   EXPECT_EQ(with.decoded.positions, without.decoded.positions);
   EXPECT_EQ(with.decoded.triangles, without.decoded.triangles);
   EXPECT_EQ(with.decoded.triangles.size(), pin.triangles.size());
+}
+
+// Without predictors a version 8 mesh is a version 7 one: the period's x is 2 x + 0 = 0 either way, so the
+// same bytes read as version 7 give the same mesh. With them, read as version 7, they do not.
+TEST(CnbVertexPredictors, AMeshWithoutPredictorsIsAVersionSevenMesh) {
+  const TriangleMesh pin = capped_cylinder(48, 0.3, 1.0);
+  const Written without = written(pin, false), with = written(pin, true);
+  const auto mesh_of = [](const std::string& file) {
+    return std::get<TriangleMesh>(read_cnb(file, "pin.cnb").root.shapes.at(0).geometry);
+  };
+  const TriangleMesh old = mesh_of(with_version(without.bytes, 7));
+  EXPECT_EQ(old.positions, without.decoded.positions);
+  EXPECT_EQ(old.triangles, without.decoded.triangles);
+  bool same = false;
+  try {
+    const TriangleMesh misread = mesh_of(with_version(with.bytes, 7));
+    same = misread.positions == with.decoded.positions && misread.triangles == with.decoded.triangles;
+  } catch (const FileError&) {
+  }
+  EXPECT_FALSE(same);
 }
 
 }  // namespace
