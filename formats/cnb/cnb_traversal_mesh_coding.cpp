@@ -342,11 +342,10 @@ class TraversalEncoder {
     }
   }
 
-  // Names vertex v beyond a gate whose predictions are `predictions` (version 8): a new one by whichever
+  // Names new vertex v beyond a gate whose predictions are `predictions` (version 8) by whichever
   // prediction its nearest grid point costs fewest estimated bits against, the predictor's symbol
   // included; then at the grid point that prediction codes cheapest (written_point).
   void predicted_vertex(int v, const std::array<GridPoint, vertex_predictor_count>& predictions) {
-    if (number_[v] >= 0) return vertex(v, predictions[0]);
     int best = 0;
     double best_bits = 0;
     for (int k = 0; k < vertex_predictor_count; ++k) {
@@ -428,7 +427,7 @@ class TraversalEncoder {
                                               : new_vertex;
     if (s == new_vertex) {
       const auto by_period = repeats_.predict(grid_[gate.from], grid_[gate.to], grid_[gate.apex]);
-      if (by_period || !state_.mesh_predictors)
+      if (by_period || !state_.mesh_predictors || number_[v] >= 0)  // an old vertex is named by its number
         vertex(v, by_period.value_or(parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex])));
       else
         predicted_vertex(v, gate_predictions(border_, g, grid_));
