@@ -1,6 +1,7 @@
 #include "formats/cnb/adaptive_arithmetic_coder.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace cadnurbs::cnb {
@@ -100,21 +101,42 @@ class Encoder {
 
 ContextModels uniform_models() { return ContextModels(static_cast<size_t>(context_count) * 256); }
 
-std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_t>& contexts,
-                              const ContextModels& start, Adaptation adaptation) {
+// Calls decide(model, bit, context) for each binary decision of `bytes`, down each byte's bit tree in its
+// context, from the models `start`, in the encoder's order.
+template <typename Decide>
+void for_each_decision(const std::string& bytes, const std::vector<uint8_t>& contexts, const ContextModels& start,
+                       Adaptation adaptation, Decide decide) {
   std::vector<WorkingModel> models = working_models(start, adaptation);
-  Encoder encoder(adaptation);
   for (size_t i = 0; i < bytes.size(); ++i) {
     WorkingModel* tree = &models[static_cast<size_t>(contexts[i]) * 256];
     const uint8_t value = static_cast<uint8_t>(bytes[i]);
     unsigned node = 1;
     for (int b = 7; b >= 0; --b) {
       const bool bit = (value >> b) & 1;
-      encoder.bit(tree[node], bit);
+      decide(tree[node], bit, contexts[i]);
       node = 2 * node + bit;
     }
   }
+}
+
+std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_t>& contexts,
+                              const ContextModels& start, Adaptation adaptation) {
+  Encoder encoder(adaptation);
+  for_each_decision(bytes, contexts, start, adaptation,
+                    [&](WorkingModel& model, bool bit, uint8_t) { encoder.bit(model, bit); });
   return encoder.finish();
+}
+
+std::vector<double> arithmetic_cost_by_context(const std::string& bytes, const std::vector<uint8_t>& contexts,
+                                               const ContextModels& start, Adaptation adaptation) {
+  std::vector<double> bits(static_cast<size_t>(context_count), 0.0);
+  const double one = static_cast<double>(1u << probability_bits(adaptation));
+  for_each_decision(bytes, contexts, start, adaptation, [&](WorkingModel& model, bool bit, uint8_t context) {
+    const double p_zero = probability(model, adaptation) / one;
+    bits[context] -= std::log2(bit ? 1.0 - p_zero : p_zero);
+    adapt(model, bit, adaptation);
+  });
+  return bits;
 }
 
 ArithmeticDecoder::ArithmeticDecoder(const char* coded, size_t size, const ContextModels& start,

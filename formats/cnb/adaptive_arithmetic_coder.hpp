@@ -47,6 +47,12 @@ ContextModels uniform_models();
 std::string arithmetic_encode(const std::string& bytes, const std::vector<uint8_t>& contexts,
                               const ContextModels& start, Adaptation adaptation);
 
+// What coding `bytes` in `contexts` from `start` costs in each context, in bits: -log2 of each decision's
+// probability as the encoder meets it, summed (context_count entries). The contexts' models adapt apart,
+// so the sum is the coded size less the range coder's few bytes of flush: where a payload's bytes go.
+std::vector<double> arithmetic_cost_by_context(const std::string& bytes, const std::vector<uint8_t>& contexts,
+                                               const ContextModels& start, Adaptation adaptation);
+
 // Decodes lazily. Past the end of the coded bytes it reads zeros: the caller bounds how many bytes it
 // asks for (the payload size in the header), and the checksum has vouched for the coded bytes.
 class ArithmeticDecoder : public ByteSource {

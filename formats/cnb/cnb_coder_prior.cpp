@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string_view>
 
 namespace cadnurbs::cnb {
@@ -44,9 +45,26 @@ int prior_level(double probability_of_zero) {
   return best;
 }
 
-const ContextModels& coder_prior_models() {
-  static const ContextModels models = make_prior();
-  return models;
+const ContextModels& coder_prior_models(uint8_t version) {
+  static const ContextModels table = make_prior();
+  static const ContextModels split = [] {
+    ContextModels models = table;
+    const auto copy = [&](int to, int from) {
+      std::copy_n(table.begin() + static_cast<ptrdiff_t>(from) * 256, 256,
+                  models.begin() + static_cast<ptrdiff_t>(to) * 256);
+    };
+    for (int shape = 0; shape < gate_symbol_contexts; ++shape) copy(gate_symbol_context(shape), symbol_context(0));
+    ByteWriter index;
+    index.varuint(0, Field::index);
+    copy(border_place_context(), index.contexts()[0]);
+    // A predictor is below 4: the first six decisions of its byte are 0 (nodes 1, 2, 4, ..., 32).
+    for (uint8_t previous = 0; previous < vertex_predictor_contexts; ++previous)
+      for (int node = 1; node < 64; node *= 2)
+        models[static_cast<size_t>(predictor_context(previous)) * 256 + static_cast<size_t>(node)] = {
+            prior_level_probability[13], prior_seen};
+    return models;
+  }();
+  return version >= 9 ? split : table;
 }
 
 }  // namespace cadnurbs::cnb

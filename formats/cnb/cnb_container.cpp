@@ -24,10 +24,10 @@ struct ArithmeticCoder {
   CnbOptions::Coder coder;
   uint8_t id;
   uint8_t first_version;
-  const ContextModels& (*start)();
+  const ContextModels& (*start)(uint8_t version);
   Adaptation adaptation;
 };
-const ContextModels& uniform_start() {
+const ContextModels& uniform_start(uint8_t) {
   static const ContextModels models = uniform_models();
   return models;
 }
@@ -83,8 +83,8 @@ class OwnedBufferSource : public ByteSource {
 
 class OwnedArithmeticSource : public ByteSource {
  public:
-  OwnedArithmeticSource(std::string coded, const ArithmeticCoder& coder)
-      : coded_(std::move(coded)), decoder_(coded_.data(), coded_.size(), coder.start(), coder.adaptation) {}
+  OwnedArithmeticSource(std::string coded, const ArithmeticCoder& coder, uint8_t version)
+      : coded_(std::move(coded)), decoder_(coded_.data(), coded_.size(), coder.start(version), coder.adaptation) {}
   uint8_t next(int context) override { return decoder_.next(context); }
 
  private:
@@ -127,7 +127,7 @@ std::string inflate_raw(const std::string& file, size_t start, size_t size, cons
 
 }  // namespace
 
-std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteReport* report) {
+std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteReport* report, uint8_t version) {
   if (payload.bytes().size() > 0xFFFFFFFFu) throw std::runtime_error("cnb: a payload above 4 GiB");
   // The entropy coders, each tried when asked for by name or for the smallest; ties keep the earlier.
   struct Candidate {
@@ -142,14 +142,14 @@ std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteRe
     Candidate& c = candidates[i];
     if (choice != CnbOptions::Coder::smallest && choice != c.coder) continue;
     c.coded = i == 0 ? deflate_raw(payload.bytes())
-                     : arithmetic_encode(payload.bytes(), payload.contexts(), arithmetic_coders[i - 1].start(),
+                     : arithmetic_encode(payload.bytes(), payload.contexts(), arithmetic_coders[i - 1].start(version),
                                          arithmetic_coders[i - 1].adaptation);
     if (!chosen || c.coded.size() < chosen->coded.size()) chosen = &c;
   }
   const std::string& coded = chosen->coded;
   const uint8_t id = chosen->id;
   std::string file(magic, 4);
-  file.push_back(static_cast<char>(format_version));
+  file.push_back(static_cast<char>(version));
   file.push_back(static_cast<char>(id));
   for (uint64_t v = payload.bytes().size();; v >>= 7) {
     file.push_back(static_cast<char>((v & 0x7F) | (v >= 0x80 ? 0x80 : 0)));
@@ -235,7 +235,7 @@ OpenedPayload open_payload(const std::string& file, const std::string& name) {
       if (a.id == id && version >= a.first_version) coder = &a;
     if (!coder) refuse(name, 5, "unknown entropy coder " + std::to_string(id));
     if (size > arithmetic_expansion_limit(coder->adaptation) * coded + 64) refuse(name, 6, "a payload of " + std::to_string(size) + " bytes cannot come from " + std::to_string(coded) + " coded bytes");
-    opened.source = std::make_unique<OwnedArithmeticSource>(file.substr(start), *coder);
+    opened.source = std::make_unique<OwnedArithmeticSource>(file.substr(start), *coder, version);
     opened.arithmetic = true;
   }
   return opened;

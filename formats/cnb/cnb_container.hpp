@@ -17,9 +17,10 @@ namespace cadnurbs::cnb {
 // float64 (docs/cnb.md).
 constexpr size_t version_1_header_size = 18;
 
-// The whole file for a payload, coded as `choice` asks (the smaller of both for Coder::smallest).
-// Fills the report's size fields.
-std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteReport* report);
+// The whole file for a payload of format version `version`, coded as `choice` asks (the smallest for
+// Coder::smallest). Fills the report's size fields.
+std::string pack(const ByteWriter& payload, CnbOptions::Coder choice, CnbWriteReport* report,
+                 uint8_t version = format_version);
 
 struct OpenedPayload {
   std::unique_ptr<ByteSource> source;  // yields the decoded payload byte by byte

@@ -35,6 +35,10 @@ struct CnbOptions {
   // (cnb_vertex_predictors.hpp); the writer also writes the file without and keeps the smaller. False: the
   // parallelogram (or the period) predicts every vertex.
   bool vertex_predictors = true;
+  // Whether a traversal's symbols take the contexts of the border's shape at the gate and earlier vertices
+  // are named by their place along the border (cnb_gate_shape.hpp; format version 9). False: a version 8
+  // file.
+  bool gate_shapes = true;
   // The entropy stage: the smallest of deflate, the adaptive arithmetic coder with every model starting at
   // ½, the same coder starting from the coder prior (cnb_coder_prior.hpp), and the coder whose models mix
   // two rates of adaptation, from the prior (adaptive_arithmetic_coder.hpp); or one of them.

@@ -12,11 +12,19 @@ int float_context(int byte_index) { return 2 * field_count + byte_index; }
 constexpr int first_symbol_context = 2 * field_count + 8;
 constexpr int first_axis_context = first_symbol_context + mesh_symbol_count;
 constexpr int first_predictor_context = first_axis_context + 4;
+constexpr int first_gate_symbol_context = first_predictor_context + vertex_predictor_contexts;
+constexpr int border_place_context_number = first_gate_symbol_context + gate_symbol_contexts;
+static_assert(border_place_context_number + 1 == context_count, "every context has its place");
+static_assert(context_count <= 256, "a context is a byte");
 }  // namespace
 
 int symbol_context(uint8_t previous) { return first_symbol_context + previous; }
 
 int predictor_context(uint8_t previous) { return first_predictor_context + previous; }
+
+int gate_symbol_context(int shape) { return first_gate_symbol_context + shape; }
+
+int border_place_context() { return border_place_context_number; }
 
 int axis_context(Field field, int axis) {
   if (axis == 0) return first_context(field);
@@ -36,6 +44,7 @@ void ByteWriter::byte(uint8_t value, Field field, bool second) {
 void ByteWriter::byte_in(uint8_t value, int context) { put(value, context); }
 
 void ByteWriter::varsint_in(int64_t value, Field field, int first) { varuint_from(zigzag(value), field, first); }
+void ByteWriter::varuint_in(uint64_t value, Field field, int first) { varuint_from(value, field, first); }
 
 void ByteWriter::varuint(uint64_t value, Field field) { varuint_from(value, field, first_context(field)); }
 
@@ -85,6 +94,7 @@ uint8_t ByteReader::byte(Field field, bool second) {
 uint8_t ByteReader::byte_in(int context) { return take(context); }
 
 int64_t ByteReader::varsint_in(Field field, int first) { return unzigzag(varuint_from(field, first)); }
+uint64_t ByteReader::varuint_in(Field field, int first) { return varuint_from(field, first); }
 
 uint64_t ByteReader::varuint(Field field) { return varuint_from(field, first_context(field)); }
 

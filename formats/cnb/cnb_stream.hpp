@@ -21,16 +21,20 @@ enum class Field : uint8_t {
 };
 // The format version writers write (docs/cnb.md); readers pass on the file's, since the contexts
 // bytes take depend on it.
-constexpr uint8_t format_version = 8;
+constexpr uint8_t format_version = 9;
 
 constexpr int field_count = 14;
 // Contexts: 2 per field (first / continuation byte of a varint), 8 for the bytes of a float64, then (format
 // version 4 on) one per mesh symbol for the symbol after it, and the first byte of a vertex's rank and of
 // its difference from the prediction on axes 1 and 2 (axis 0 keeps the field's own); then (version 8 on)
-// one per vertex predictor for the predictor after it.
+// one per vertex predictor for the predictor after it; then (version 9 on) one per shape of the border
+// after the gate (cnb_gate_shape.hpp) for a traversal's symbol after a new vertex beyond a gate, and one
+// for the first byte of an earlier vertex's place along the border.
 constexpr int mesh_symbol_count = 7;
 constexpr int vertex_predictor_contexts = 4;
-constexpr int context_count = 2 * field_count + 8 + mesh_symbol_count + 4 + vertex_predictor_contexts;
+constexpr int gate_symbol_contexts = 5;
+constexpr int context_count =
+    2 * field_count + 8 + mesh_symbol_count + 4 + vertex_predictor_contexts + gate_symbol_contexts + 1;
 
 // Whether `context` is one of a float64's 8 (after the fields' own 2 each).
 constexpr bool float64_context(int context) { return context >= 2 * field_count && context < 2 * field_count + 8; }
@@ -42,6 +46,12 @@ int axis_context(Field field, int axis);
 // The context of a new vertex's predictor that follows `previous` (< vertex_predictor_contexts), version 8
 // on (cnb_vertex_predictors.hpp).
 int predictor_context(uint8_t previous);
+// The context of a traversal's symbol after a new vertex beyond a gate of shape `shape` (< 5), version 9
+// on.
+int gate_symbol_context(int shape);
+// The context of the first byte of an earlier vertex's place along the border (Field::index continues
+// it), version 9 on.
+int border_place_context();
 
 // A damaged or impossible payload: where (byte offset in the decoded payload) and why.
 struct PayloadError : std::runtime_error {
@@ -63,6 +73,7 @@ class ByteWriter {
   // bytes take the field's.
   void byte_in(uint8_t value, int context);
   void varsint_in(int64_t value, Field field, int first_context);
+  void varuint_in(uint64_t value, Field field, int first_context);
   void float64(double value);
   void float32(float value);  // in the contexts of a float64's upper four bytes
   void text(const std::string& value);
@@ -97,6 +108,7 @@ class ByteReader {
   int64_t varsint(Field field);
   uint8_t byte_in(int context);  // as ByteWriter::byte_in and varsint_in
   int64_t varsint_in(Field field, int first_context);
+  uint64_t varuint_in(Field field, int first_context);
   double float64();
   float float32();
   std::string text();

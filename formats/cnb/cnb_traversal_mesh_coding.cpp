@@ -24,6 +24,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "formats/cnb/cnb_gate_shape.hpp"
 #include "formats/cnb/cnb_geometry.hpp"
 #include "formats/cnb/cnb_mesh_period.hpp"
 #include "formats/cnb/cnb_numbers.hpp"
@@ -229,6 +230,36 @@ std::array<GridPoint, vertex_predictor_count> gate_predictions(Border& border, i
                             border_chain(border, g, grid, false));
 }
 
+// The shape of the border after gate g (version 9 on): the context of its symbol after a new vertex.
+int shape_at(Border& border, int g, const std::vector<GridPoint>& grid) {
+  const BorderEdge& gate = border[g];
+  std::optional<GridPoint> after;
+  if (gate.next != g) after = grid[border[gate.next].to];
+  return gate_shape(grid[gate.from], grid[gate.to], grid[gate.apex], after);
+}
+
+// An earlier vertex beyond a gate (version 9 on) is named by its place along the gate's list: 2 d + 1 for
+// the start of the d-th edge after the gate, 2 d + 2 for the end of the d-th edge before it, d below
+// farthest_border_place (a reader walks no farther); 0 where it is not so near (then by its number).
+constexpr int farthest_border_place = 1024;
+
+// The place of vertex v along the list of gate g, the nearest first; 0 when not within reach.
+uint64_t border_place(Border& border, int g, int v) {
+  int after = border[g].next, before = border[g].previous;
+  for (int d = 0; d < farthest_border_place; ++d) {
+    if (after == g && before == g) break;
+    if (after != g) {
+      if (border[after].from == v) return 2 * static_cast<uint64_t>(d) + 1;
+      after = border[after].next;
+    }
+    if (before != g) {
+      if (border[before].to == v) return 2 * static_cast<uint64_t>(d) + 2;
+      before = border[before].previous;
+    }
+  }
+  return 0;
+}
+
 class TraversalEncoder {
  public:
   // `members` (may be null): each triangle's mesh in a group, coded after the triangle.
@@ -301,7 +332,7 @@ class TraversalEncoder {
 
   // A symbol, in the model of those that follow the symbol before it.
   void symbol(uint8_t s) {
-    out_.byte_in(s, symbol_context(previous_));
+    out_.byte_in(s, gate_shape_ >= 0 ? gate_symbol_context(gate_shape_) : symbol_context(previous_));
     previous_ = s;
   }
 
@@ -380,6 +411,16 @@ class TraversalEncoder {
     state_.last_mesh_vertex = grid_[v];
   }
 
+  bool gate_shapes() const { return state_.version >= 9; }
+
+  // Names earlier vertex v beyond gate g by its place along the border, else by its number (version 9).
+  void old_vertex_by_place(int g, int v) {
+    symbol(old_vertex);
+    const uint64_t place = border_place(border_, g, v);
+    out_.varuint_in(place, Field::index, border_place_context());
+    if (place == 0) out_.varuint(static_cast<uint64_t>(count_ - 1 - number_[v]), Field::index);
+  }
+
   // The member of triangle t, predicted as `predicted` (nothing outside a group).
   int member(int t, int predicted) {
     if (!members_) return 0;
@@ -390,6 +431,7 @@ class TraversalEncoder {
   }
 
   void start(int t) {
+    gate_shape_ = -1;  // a start's symbols take the contexts of version 8
     visited_[t] = true;
     ++written_;
     for (int k = 0; k < 3; ++k) vertex(mesh_.triangles[t][k], state_.last_mesh_vertex);
@@ -405,9 +447,11 @@ class TraversalEncoder {
   void step() {
     const int g = border_.gate();
     const BorderEdge gate = border_[g];
+    gate_shape_ = gate_shapes() && previous_ == new_vertex ? shape_at(border_, g, grid_) : -1;
     const int far = twin_[gate.half_edge];
     if (far < 0 || visited_[far / 3]) {
-      symbol(far < 0 ? no_triangle : reached);
+      // (Version 9 on, one symbol for both: the reader drops the gate either way.)
+      symbol(far < 0 || gate_shapes() ? no_triangle : reached);
       border_.remove(g);
       return;
     }
@@ -427,7 +471,9 @@ class TraversalEncoder {
                                               : new_vertex;
     if (s == new_vertex) {
       const auto by_period = repeats_.predict(grid_[gate.from], grid_[gate.to], grid_[gate.apex]);
-      if (by_period || !state_.mesh_predictors || number_[v] >= 0)  // an old vertex is named by its number
+      if (number_[v] >= 0 && gate_shapes())
+        old_vertex_by_place(g, v);
+      else if (by_period || !state_.mesh_predictors || number_[v] >= 0)  // an old vertex is named by its number
         vertex(v, by_period.value_or(parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex])));
       else
         predicted_vertex(v, gate_predictions(border_, g, grid_));
@@ -454,6 +500,7 @@ class TraversalEncoder {
   int count_ = 0;
   size_t written_ = 0;
   uint8_t previous_ = new_vertex;
+  int gate_shape_ = -1;  // version 9 on: the shape after the gate, the context of a symbol after a new vertex; else -1
   uint8_t previous_predictor_ = 0;
   std::array<std::array<double, vertex_predictor_count>, vertex_predictor_count> predictor_counts_{
       {{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}}};
@@ -468,7 +515,7 @@ class TraversalDecoder {
                    std::vector<int>* members = nullptr)
       : in_(in), q_(q), values_(state.mesh_values), last_(state.last_mesh_vertex), member_count_(member_count),
         members_(members), version_4_contexts_(state.version >= 4), period_(state.version >= 5),
-        predictor_flag_(state.version >= 8) {}
+        predictor_flag_(state.version >= 8), gate_shapes_(state.version >= 9) {}
 
   TriangleMesh decode() {
     vertex_count_ = in_.count(4);
@@ -528,8 +575,9 @@ class TraversalDecoder {
   // new vertex or of those that follow anything else.
   uint8_t symbol() {
     const size_t at = in_.offset();
-    previous_ = version_4_contexts_ ? in_.byte_in(symbol_context(previous_))
-                                    : in_.byte(Field::symbol, previous_ != new_vertex);
+    previous_ = gate_shape_ >= 0     ? in_.byte_in(gate_symbol_context(gate_shape_))
+                : version_4_contexts_ ? in_.byte_in(symbol_context(previous_))
+                                      : in_.byte(Field::symbol, previous_ != new_vertex);
     // (Checked here, since the next symbol's context depends on it.)
     if (version_4_contexts_ && previous_ >= symbol_count)
       in_.fail("unknown mesh symbol " + std::to_string(previous_), at);
@@ -547,6 +595,7 @@ class TraversalDecoder {
   }
 
   void start() {
+    gate_shape_ = -1;
     std::array<int, 3> v;
     for (int k = 0; k < 3; ++k) {
       const size_t at = in_.offset();
@@ -560,8 +609,9 @@ class TraversalDecoder {
 
   void step() {
     const size_t at = in_.offset();
-    const uint8_t symbol = this->symbol();
     const int g = border_.gate();
+    gate_shape_ = gate_shapes_ && previous_ == new_vertex ? shape_at(border_, g, grid_) : -1;
+    const uint8_t symbol = this->symbol();
     const BorderEdge gate = border_[g];
     if (symbol >= symbol_count) in_.fail("unknown mesh symbol " + std::to_string(symbol), at);
     if (symbol == no_triangle || symbol == reached) {
@@ -577,6 +627,8 @@ class TraversalDecoder {
       v = border_[gate.previous].from;
     else if (uses_after)
       v = border_[gate.next].to;
+    else if (symbol == old_vertex && gate_shapes_)
+      v = vertex_at_place(g, at);
     else
       v = vertex(symbol, at, predicted_beyond(g, symbol));
     const int m = triangle(gate.to, gate.from, v, at, gate.member);
@@ -597,6 +649,23 @@ class TraversalDecoder {
     if (predictor >= vertex_predictor_count) in_.fail("unknown vertex predictor " + std::to_string(predictor), at);
     previous_predictor_ = predictor;
     return gate_predictions(border_, g, grid_)[predictor];
+  }
+
+  // The earlier vertex named by its place along the list of gate g (version 9 on), else by its number.
+  int vertex_at_place(int g, size_t at) {
+    const size_t place_at = in_.offset();
+    const uint64_t place = in_.varuint_in(Field::index, border_place_context());
+    if (place == 0) return vertex(old_vertex, at, {0, 0, 0});
+    const uint64_t d = (place - 1) / 2;
+    const bool after = (place - 1) % 2 == 0;
+    if (d >= farthest_border_place)
+      in_.fail("border place " + std::to_string(place) + " beyond the " + std::to_string(farthest_border_place) +
+                   " edges a reader walks",
+               place_at);
+    int i = after ? border_[g].next : border_[g].previous;
+    for (uint64_t k = 0; k < d && i != g; ++k) i = after ? border_[i].next : border_[i].previous;
+    if (i == g) in_.fail("border place " + std::to_string(place) + " beyond the gate's border", place_at);
+    return after ? border_[i].from : border_[i].to;
   }
 
   // Whether the loop through edge g holds fewer than n distinct edges.
@@ -626,6 +695,9 @@ class TraversalDecoder {
   bool period_;              // version 5 on: the mesh's period, and vertices predicted by it
   bool predictor_flag_;      // version 8 on: the period's x says too whether new vertices name their predictor
   bool predictors_ = false;
+  bool gate_shapes_;     // version 9 on: symbols after a new vertex by the shape after the gate, earlier
+                         // vertices by their place along the border
+  int gate_shape_ = -1;  // that shape while a step reads its symbol; else -1
   uint8_t previous_predictor_ = 0;
   PeriodPredictor repeats_{{0, 0, 0}};
 };

@@ -176,6 +176,7 @@ struct SceneEncoder {
     fresh.trim_extrapolation = state.trim_extrapolation;
     fresh.mesh_periods = state.mesh_periods;
     fresh.mesh_predictors = state.mesh_predictors;
+    fresh.version = state.version;
     fresh.free_radius = state.free_radius;
     fresh.locked_points = state.locked_points;
     fresh.trim_knot_removal = state.trim_knot_removal;
@@ -310,6 +311,7 @@ std::string encode(const Scene& scene, const CnbOptions& options, const Encoding
   }
   SceneEncoder encoder{ByteWriter{}, analyses, options, q, r, {}, {}, 0, {}};
   encoder.state.periods = &analyses.periods;
+  encoder.state.version = options.gate_shapes ? format_version : 8;
   encoder.state.trim_extrapolation = choice.trim_extrapolation;
   encoder.state.piece_copies = choice.piece_copies;
   encoder.state.mesh_periods = choice.mesh_periods;
@@ -358,7 +360,7 @@ std::string encode(const Scene& scene, const CnbOptions& options, const Encoding
     else
       r.other_bytes++;
   }
-  return pack(payload, options.coder, &r);
+  return pack(payload, options.coder, &r, encoder.state.version);
 }
 
 }  // namespace

@@ -317,24 +317,30 @@ TEST(CnbDamage, MeshGroupsThatCannotBeRight) {
   }
 }
 
+// The root's one shape, a traversal-coded mesh of `vertices` and `triangles` whose period's x is
+// `period_x` (its y and z 0), up to its starting triangle: three new vertices (0,0,0) + the unit steps.
+void traversal_start(cnb::ByteWriter& w, uint64_t vertices, uint64_t triangles, int64_t period_x) {
+  w.varuint(1, cnb::Field::count);  // the node's shapes
+  w.byte(5);
+  w.text("");
+  w.varuint(vertices, cnb::Field::count);
+  w.varuint(triangles, cnb::Field::count);
+  for (int k = 0; k < 3; ++k) w.varsint(k == 0 ? period_x : 0, cnb::Field::point);
+  for (int v = 0; v < 3; ++v) {
+    w.byte_in(0, cnb::symbol_context(0));
+    w.byte(0, cnb::Field::mesh_axes);
+    for (int k = 0; k < 3; ++k) w.varsint_in(k == v ? 1 : 0, cnb::Field::mesh_point, cnb::axis_context(cnb::Field::mesh_point, k));
+  }
+}
+
 // A new vertex naming a fifth predictor (version 8), in a mesh whose period's x is 2 * 0 + 1: predictors named.
 TEST(CnbDamage, VertexPredictorsThatCannotBeRight) {
   // A shape of two triangles: the period's x 1 (predictors named), the starting triangle's three vertices,
   // then a new vertex beyond its first edge that names `predictor`.
   const auto error_for = [](uint8_t predictor) {
     cnb::ByteWriter w = scene_header_and_root();
-    w.varuint(1, cnb::Field::count);  // the node's shapes
-    w.byte(5);
-    w.text("");
-    w.varuint(4, cnb::Field::count);
-    w.varuint(2, cnb::Field::count);
-    for (int k = 0; k < 3; ++k) w.varsint(k == 0 ? 1 : 0, cnb::Field::point);
-    for (int v = 0; v < 3; ++v) {
-      w.byte_in(0, cnb::symbol_context(0));
-      w.byte(0, cnb::Field::mesh_axes);
-      for (int k = 0; k < 3; ++k) w.varsint_in(k == v ? 1 : 0, cnb::Field::mesh_point, cnb::axis_context(cnb::Field::mesh_point, k));
-    }
-    w.byte_in(0, cnb::symbol_context(0));
+    traversal_start(w, 4, 2, 1);
+    w.byte_in(0, cnb::gate_symbol_context(0));
     const size_t predictor_at = w.bytes().size();
     w.byte_in(predictor, cnb::predictor_context(0));
     w.byte(0, cnb::Field::mesh_axes);
@@ -349,6 +355,38 @@ TEST(CnbDamage, VertexPredictorsThatCannotBeRight) {
   {
     const auto [predictor_at, error] = error_for(4);
     EXPECT_EQ(error, name + ": decoded byte " + std::to_string(predictor_at) + ": unknown vertex predictor 4");
+  }
+}
+
+// An earlier vertex named by its place along the border (version 9): after the starting triangle v0 v1 v2
+// the border is its three edges, the gate v0 -> v1 first. Place 3 is the start of the second edge after
+// the gate, v2 (the triangle v1 v0 v2); place 5 would be the third, which is the gate itself; place 0
+// names the vertex by its number instead. A reader walks at most 1,024 edges.
+TEST(CnbDamage, BorderPlacesThatCannotBeRight) {
+  const auto error_for = [](std::initializer_list<uint64_t> place) {
+    cnb::ByteWriter w = scene_header_and_root();
+    traversal_start(w, 3, 2, 0);  // no period, no predictors named
+    w.byte_in(4, cnb::gate_symbol_context(0));  // an earlier vertex
+    const size_t place_at = w.bytes().size();
+    w.varuint_in(*place.begin(), cnb::Field::index, cnb::border_place_context());
+    for (auto v = place.begin() + 1; v != place.end(); ++v) w.varuint(*v, cnb::Field::index);
+    w.varuint(0, cnb::Field::count);  // children
+    return std::pair{place_at, error_of(cnb::pack(w, CnbOptions::Coder::deflate, nullptr))};
+  };
+  EXPECT_EQ(error_for({3}).second, "(read without error)");
+  EXPECT_EQ(error_for({0, 0}).second, "(read without error)");  // by number: the last vertex, v2
+  {
+    const auto [place_at, error] = error_for({5});
+    EXPECT_EQ(error, name + ": decoded byte " + std::to_string(place_at) + ": border place 5 beyond the gate's border");
+  }
+  {
+    const auto [place_at, error] = error_for({2049});
+    EXPECT_EQ(error, name + ": decoded byte " + std::to_string(place_at) +
+                         ": border place 2049 beyond the 1024 edges a reader walks");
+  }
+  {  // place 1: v1, the gate's own end, so the triangle v1 v0 v1
+    const auto [place_at, error] = error_for({1});
+    EXPECT_EQ(error, name + ": decoded byte " + std::to_string(place_at - 1) + ": a triangle with a repeated vertex");
   }
 }
 

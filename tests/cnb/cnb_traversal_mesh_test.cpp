@@ -162,6 +162,7 @@ TEST(CnbTraversalMesh, VersionThreeContextsStillRead) {
   options.max_deviation = 0.01;
   options.coder = CnbOptions::Coder::arithmetic;
   options.vertex_predictors = false;
+  options.gate_shapes = false;  // a version 8 file
   TriangleMesh jittered = torus(24, 12);
   std::mt19937 random(5);
   for (auto& p : jittered.positions)
