@@ -57,6 +57,11 @@ const ContextModels& coder_prior_models(uint8_t version) {
     ByteWriter index;
     index.varuint(0, Field::index);
     copy(border_place_context(), index.contexts()[0]);
+    for (int axis = 0; axis < 3; ++axis) {
+      copy(value_context(Field::mesh_rank, axis, false), value_context(Field::mesh_rank, axis, true));
+      copy(value_context(Field::mesh_point, axis, true), value_context(Field::mesh_point, axis, false));
+    }
+    copy(axes_context(false), axes_context(true));
     // A predictor is below 4: the first six decisions of its byte are 0 (nodes 1, 2, 4, ..., 32).
     for (uint8_t previous = 0; previous < vertex_predictor_contexts; ++previous)
       for (int node = 1; node < 64; node *= 2)

@@ -30,8 +30,9 @@ int prior_level(double probability_of_zero);
 // The models of the prior for a file of format version `version`, context_count × 256: a trained model at
 // its level's probability with prior_seen bits seen, any other at ½ with none. Contexts beyond the table
 // start at ½, except from version 9 on: the context of a symbol after a new vertex at each shape of the
-// border starts as the table's context of the symbol after a new vertex, and the border place's as the
-// index's. Those contexts split models the table trained (cnb_stream.hpp); starting them at ½ would make
+// border starts as the table's context of the symbol after a new vertex, the border place's as the
+// index's, and each vertex value's by whether its prediction is listed as the one that version 8 coded it
+// in (cnb_vertex_values.hpp). Those contexts split models the table trained (cnb_stream.hpp); starting them at ½ would make
 // each learn again that a symbol is below 8 (on the DFN/QFN sample of cnb_gate_shape.hpp, 150 contexts so
 // started cost 8,449 bytes of symbols where version 8 spent 6,561). And the vertex predictors' contexts
 // (version 8's start at ½) start sure, at level 13, that the first six decisions of a predictor are 0,

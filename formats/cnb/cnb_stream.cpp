@@ -14,7 +14,8 @@ constexpr int first_axis_context = first_symbol_context + mesh_symbol_count;
 constexpr int first_predictor_context = first_axis_context + 4;
 constexpr int first_gate_symbol_context = first_predictor_context + vertex_predictor_contexts;
 constexpr int border_place_context_number = first_gate_symbol_context + gate_symbol_contexts;
-static_assert(border_place_context_number + 1 == context_count, "every context has its place");
+constexpr int first_value_context = border_place_context_number + 1;
+static_assert(first_value_context + listed_prediction_contexts == context_count, "every context has its place");
 static_assert(context_count <= 256, "a context is a byte");
 }  // namespace
 
@@ -25,6 +26,15 @@ int predictor_context(uint8_t previous) { return first_predictor_context + previ
 int gate_symbol_context(int shape) { return first_gate_symbol_context + shape; }
 
 int border_place_context() { return border_place_context_number; }
+
+int value_context(Field field, int axis, bool prediction_listed) {
+  if (field == Field::mesh_rank) return prediction_listed ? axis_context(field, axis) : first_value_context + axis;
+  return prediction_listed ? first_value_context + 3 + axis : axis_context(field, axis);
+}
+
+int axes_context(bool all_predictions_listed) {
+  return all_predictions_listed ? first_context(Field::mesh_axes) : first_value_context + 6;
+}
 
 int axis_context(Field field, int axis) {
   if (axis == 0) return first_context(field);

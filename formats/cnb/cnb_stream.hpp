@@ -28,13 +28,15 @@ constexpr int field_count = 14;
 // version 4 on) one per mesh symbol for the symbol after it, and the first byte of a vertex's rank and of
 // its difference from the prediction on axes 1 and 2 (axis 0 keeps the field's own); then (version 8 on)
 // one per vertex predictor for the predictor after it; then (version 9 on) one per shape of the border
-// after the gate (cnb_gate_shape.hpp) for a traversal's symbol after a new vertex beyond a gate, and one
-// for the first byte of an earlier vertex's place along the border.
+// after the gate (cnb_gate_shape.hpp) for a traversal's symbol after a new vertex beyond a gate, one
+// for the first byte of an earlier vertex's place along the border, and 7 for vertex values whose
+// prediction is or is not listed (cnb_vertex_values.hpp).
 constexpr int mesh_symbol_count = 7;
 constexpr int vertex_predictor_contexts = 4;
 constexpr int gate_symbol_contexts = 5;
-constexpr int context_count =
-    2 * field_count + 8 + mesh_symbol_count + 4 + vertex_predictor_contexts + gate_symbol_contexts + 1;
+constexpr int listed_prediction_contexts = 7;
+constexpr int context_count = 2 * field_count + 8 + mesh_symbol_count + 4 + vertex_predictor_contexts +
+                              gate_symbol_contexts + 1 + listed_prediction_contexts;
 
 // Whether `context` is one of a float64's 8 (after the fields' own 2 each).
 constexpr bool float64_context(int context) { return context >= 2 * field_count && context < 2 * field_count + 8; }
@@ -52,6 +54,11 @@ int gate_symbol_context(int shape);
 // The context of the first byte of an earlier vertex's place along the border (Field::index continues
 // it), version 9 on.
 int border_place_context();
+// Version 9 on: the context of the first byte of a vertex coordinate's rank or difference on `axis` by
+// whether its prediction is a listed value (a rank's where it is, and a difference's where it is not, are
+// axis_context's), and of the axes byte by whether all three predictions are (where they are, the field's).
+int value_context(Field field, int axis, bool prediction_listed);
+int axes_context(bool all_predictions_listed);
 
 // A damaged or impossible payload: where (byte offset in the decoded payload) and why.
 struct PayloadError : std::runtime_error {

@@ -349,7 +349,7 @@ class TraversalEncoder {
           .norm();
     };
     GridPoint best = nearest;
-    double best_bits = state_.mesh_values.estimated_bits(nearest, predicted), best_distance = distance(nearest);
+    double best_bits = state_.mesh_values.estimated_bits(nearest, predicted, value_coding(state_.version)), best_distance = distance(nearest);
     const double reach = radius * (1.0 - 1e-9);  // rounding in `at` stays inside the bound
     GridPoint g;
     for (g[0] = static_cast<int64_t>(std::ceil(at.x() - reach)); g[0] <= static_cast<int64_t>(std::floor(at.x() + reach)); ++g[0])
@@ -357,7 +357,7 @@ class TraversalEncoder {
         for (g[2] = static_cast<int64_t>(std::ceil(at.z() - reach)); g[2] <= static_cast<int64_t>(std::floor(at.z() + reach)); ++g[2]) {
           const double d = distance(g);
           if (d > reach) continue;
-          const double bits = state_.mesh_values.estimated_bits(g, predicted);
+          const double bits = state_.mesh_values.estimated_bits(g, predicted, value_coding(state_.version));
           if (bits < best_bits || (bits == best_bits && d < best_distance)) best = g, best_bits = bits, best_distance = d;
         }
     return best;
@@ -380,7 +380,7 @@ class TraversalEncoder {
     int best = 0;
     double best_bits = 0;
     for (int k = 0; k < vertex_predictor_count; ++k) {
-      const double bits = state_.mesh_values.estimated_bits(grid_[v], predictions[k]) + predictor_bits(k);
+      const double bits = state_.mesh_values.estimated_bits(grid_[v], predictions[k], value_coding(state_.version)) + predictor_bits(k);
       if (k == 0 || bits < best_bits || (bits == best_bits && k == previous_predictor_)) best = k, best_bits = bits;
     }
     new_vertex_at(v, written_point(v, predictions[best]), predictions[best], best);
@@ -405,7 +405,7 @@ class TraversalEncoder {
       predictor_counts_[previous_predictor_][predictor] += 1;
       previous_predictor_ = static_cast<uint8_t>(predictor);
     }
-    state_.mesh_values.write(out_, grid_[v], predicted, /*by_axis=*/true);  // the writer writes version 5 on
+    state_.mesh_values.write(out_, grid_[v], predicted, value_coding(state_.version));
     repeats_.add_vertex(count_, grid_[v]);
     number_[v] = count_++;
     state_.last_mesh_vertex = grid_[v];
@@ -515,7 +515,7 @@ class TraversalDecoder {
                    std::vector<int>* members = nullptr)
       : in_(in), q_(q), values_(state.mesh_values), last_(state.last_mesh_vertex), member_count_(member_count),
         members_(members), version_4_contexts_(state.version >= 4), period_(state.version >= 5),
-        predictor_flag_(state.version >= 8), gate_shapes_(state.version >= 9) {}
+        predictor_flag_(state.version >= 8), gate_shapes_(state.version >= 9), value_coding_(value_coding(state.version)) {}
 
   TriangleMesh decode() {
     vertex_count_ = in_.count(4);
@@ -556,7 +556,7 @@ class TraversalDecoder {
     if (symbol == new_vertex) {
       if (grid_.size() >= vertex_count_)
         in_.fail("more vertices than the " + std::to_string(vertex_count_) + " declared", at);
-      const GridPoint p = values_.read(in_, predicted, version_4_contexts_);
+      const GridPoint p = values_.read(in_, predicted, value_coding_);
       repeats_.add_vertex(static_cast<int>(grid_.size()), p);
       grid_.push_back(p);
       last_ = p;
@@ -691,13 +691,14 @@ class TraversalDecoder {
   std::vector<int>* members_;
   int last_member_ = 0;
   bool member_after_other_ = false;
-  bool version_4_contexts_;  // symbols by the one before, coordinates by axis
+  bool version_4_contexts_;  // symbols by the one before
   bool period_;              // version 5 on: the mesh's period, and vertices predicted by it
   bool predictor_flag_;      // version 8 on: the period's x says too whether new vertices name their predictor
   bool predictors_ = false;
   bool gate_shapes_;     // version 9 on: symbols after a new vertex by the shape after the gate, earlier
                          // vertices by their place along the border
   int gate_shape_ = -1;  // that shape while a step reads its symbol; else -1
+  ValueCoding value_coding_;
   uint8_t previous_predictor_ = 0;
   PeriodPredictor repeats_{{0, 0, 0}};
 };
