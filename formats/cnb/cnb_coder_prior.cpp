@@ -54,9 +54,7 @@ const ContextModels& coder_prior_models(uint8_t version) {
                   models.begin() + static_cast<ptrdiff_t>(to) * 256);
     };
     for (int shape = 0; shape < gate_symbol_contexts; ++shape) copy(gate_symbol_context(shape), symbol_context(0));
-    ByteWriter index;
-    index.varuint(0, Field::index);
-    copy(border_place_context(), index.contexts()[0]);
+    copy(border_place_context(), first_context(Field::index));
     for (int axis = 0; axis < 3; ++axis) {
       copy(value_context(Field::mesh_rank, axis, false), value_context(Field::mesh_rank, axis, true));
       copy(value_context(Field::mesh_point, axis, true), value_context(Field::mesh_point, axis, false));

@@ -5,8 +5,9 @@
 
 namespace cadnurbs::cnb {
 
-namespace {
 int first_context(Field f) { return 2 * static_cast<int>(f); }
+
+namespace {
 int continuation_context(Field f) { return 2 * static_cast<int>(f) + 1; }
 int float_context(int byte_index) { return 2 * field_count + byte_index; }
 constexpr int first_symbol_context = 2 * field_count + 8;

@@ -40,6 +40,8 @@ constexpr int context_count = 2 * field_count + 8 + mesh_symbol_count + 4 + vert
 
 // Whether `context` is one of a float64's 8 (after the fields' own 2 each).
 constexpr bool float64_context(int context) { return context >= 2 * field_count && context < 2 * field_count + 8; }
+// The context of a field's byte, or of a varint's first byte (its continuation bytes take the next one).
+int first_context(Field field);
 // The context of a mesh symbol that follows `previous` (< mesh_symbol_count), version 4 on.
 int symbol_context(uint8_t previous);
 // The context of the first byte of a vertex coordinate's rank (Field::mesh_rank) or difference

@@ -265,7 +265,8 @@ class TraversalEncoder {
   // `members` (may be null): each triangle's mesh in a group, coded after the triangle.
   TraversalEncoder(ByteWriter& out, const TriangleMesh& mesh, double q, CodingState& state,
                    const std::vector<int>* members)
-      : out_(out), mesh_(mesh), members_(members), state_(state), q_(q), grid_(grid_points(mesh, q)) {
+      : out_(out), mesh_(mesh), members_(members), state_(state), q_(q), grid_(grid_points(mesh, q)),
+        value_coding_(value_coding(state.version)) {
     pair_half_edges();
   }
 
@@ -330,7 +331,8 @@ class TraversalEncoder {
     return static_cast<size_t>(std::count(used.begin(), used.end(), true));
   }
 
-  // A symbol, in the model of those that follow the symbol before it.
+  // A symbol, in the model of those that follow the symbol before it (version 9 on, after a new vertex
+  // beyond a gate, in the model of the border's shape there).
   void symbol(uint8_t s) {
     out_.byte_in(s, gate_shape_ >= 0 ? gate_symbol_context(gate_shape_) : symbol_context(previous_));
     previous_ = s;
@@ -349,7 +351,7 @@ class TraversalEncoder {
           .norm();
     };
     GridPoint best = nearest;
-    double best_bits = state_.mesh_values.estimated_bits(nearest, predicted, value_coding(state_.version)), best_distance = distance(nearest);
+    double best_bits = state_.mesh_values.estimated_bits(nearest, predicted, value_coding_), best_distance = distance(nearest);
     const double reach = radius * (1.0 - 1e-9);  // rounding in `at` stays inside the bound
     GridPoint g;
     for (g[0] = static_cast<int64_t>(std::ceil(at.x() - reach)); g[0] <= static_cast<int64_t>(std::floor(at.x() + reach)); ++g[0])
@@ -357,7 +359,7 @@ class TraversalEncoder {
         for (g[2] = static_cast<int64_t>(std::ceil(at.z() - reach)); g[2] <= static_cast<int64_t>(std::floor(at.z() + reach)); ++g[2]) {
           const double d = distance(g);
           if (d > reach) continue;
-          const double bits = state_.mesh_values.estimated_bits(g, predicted, value_coding(state_.version));
+          const double bits = state_.mesh_values.estimated_bits(g, predicted, value_coding_);
           if (bits < best_bits || (bits == best_bits && d < best_distance)) best = g, best_bits = bits, best_distance = d;
         }
     return best;
@@ -369,9 +371,12 @@ class TraversalEncoder {
       new_vertex_at(v, written_point(v, predicted), predicted, -1);
     } else {
       symbol(old_vertex);
-      out_.varuint(static_cast<uint64_t>(count_ - 1 - number_[v]), Field::index);
+      write_number(v);
     }
   }
+
+  // Earlier vertex v's number, counted back from the last vertex.
+  void write_number(int v) { out_.varuint(static_cast<uint64_t>(count_ - 1 - number_[v]), Field::index); }
 
   // Names new vertex v beyond a gate whose predictions are `predictions` (version 8) by whichever
   // prediction its nearest grid point costs fewest estimated bits against, the predictor's symbol
@@ -380,7 +385,7 @@ class TraversalEncoder {
     int best = 0;
     double best_bits = 0;
     for (int k = 0; k < vertex_predictor_count; ++k) {
-      const double bits = state_.mesh_values.estimated_bits(grid_[v], predictions[k], value_coding(state_.version)) + predictor_bits(k);
+      const double bits = state_.mesh_values.estimated_bits(grid_[v], predictions[k], value_coding_) + predictor_bits(k);
       if (k == 0 || bits < best_bits || (bits == best_bits && k == previous_predictor_)) best = k, best_bits = bits;
     }
     new_vertex_at(v, written_point(v, predictions[best]), predictions[best], best);
@@ -405,7 +410,7 @@ class TraversalEncoder {
       predictor_counts_[previous_predictor_][predictor] += 1;
       previous_predictor_ = static_cast<uint8_t>(predictor);
     }
-    state_.mesh_values.write(out_, grid_[v], predicted, value_coding(state_.version));
+    state_.mesh_values.write(out_, grid_[v], predicted, value_coding_);
     repeats_.add_vertex(count_, grid_[v]);
     number_[v] = count_++;
     state_.last_mesh_vertex = grid_[v];
@@ -413,12 +418,13 @@ class TraversalEncoder {
 
   bool gate_shapes() const { return state_.version >= 9; }
 
-  // Names earlier vertex v beyond gate g by its place along the border, else by its number (version 9).
-  void old_vertex_by_place(int g, int v) {
+  // Names earlier vertex v beyond gate g: from version 9 by its place along the border (0 where not within
+  // reach, then by its number), before by its number.
+  void earlier_vertex_beyond(int g, int v) {
     symbol(old_vertex);
-    const uint64_t place = border_place(border_, g, v);
-    out_.varuint_in(place, Field::index, border_place_context());
-    if (place == 0) out_.varuint(static_cast<uint64_t>(count_ - 1 - number_[v]), Field::index);
+    const uint64_t place = gate_shapes() ? border_place(border_, g, v) : 0;
+    if (gate_shapes()) out_.varuint_in(place, Field::index, border_place_context());
+    if (place == 0) write_number(v);
   }
 
   // The member of triangle t, predicted as `predicted` (nothing outside a group).
@@ -469,16 +475,16 @@ class TraversalEncoder {
                 : closes_before               ? closes_previous
                 : closes_after                ? closes_next
                                               : new_vertex;
-    if (s == new_vertex) {
+    if (s != new_vertex) {
+      symbol(s);
+    } else if (number_[v] >= 0) {  // an earlier vertex: no prediction
+      earlier_vertex_beyond(g, v);
+    } else {
       const auto by_period = repeats_.predict(grid_[gate.from], grid_[gate.to], grid_[gate.apex]);
-      if (number_[v] >= 0 && gate_shapes())
-        old_vertex_by_place(g, v);
-      else if (by_period || !state_.mesh_predictors || number_[v] >= 0)  // an old vertex is named by its number
+      if (by_period || !state_.mesh_predictors)
         vertex(v, by_period.value_or(parallelogram(grid_[gate.from], grid_[gate.to], grid_[gate.apex])));
       else
         predicted_vertex(v, gate_predictions(border_, g, grid_));
-    } else {
-      symbol(s);
     }
     repeats_.add_triangle(number_[gate.to], number_[gate.from], number_[v]);
     const int m = member(far / 3, gate.member);
@@ -501,6 +507,7 @@ class TraversalEncoder {
   size_t written_ = 0;
   uint8_t previous_ = new_vertex;
   int gate_shape_ = -1;  // version 9 on: the shape after the gate, the context of a symbol after a new vertex; else -1
+  ValueCoding value_coding_;
   uint8_t previous_predictor_ = 0;
   std::array<std::array<double, vertex_predictor_count>, vertex_predictor_count> predictor_counts_{
       {{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}}};
@@ -571,8 +578,9 @@ class TraversalDecoder {
     return static_cast<int>(grid_.size() - 1 - back);
   }
 
-  // Version 4 on: in the model of the symbols that follow the one before; before: of those that follow a
-  // new vertex or of those that follow anything else.
+  // Version 4 on: in the model of the symbols that follow the one before (version 9 on, after a new vertex
+  // beyond a gate, of the border's shape there); before: of those that follow a new vertex or of those
+  // that follow anything else.
   uint8_t symbol() {
     const size_t at = in_.offset();
     previous_ = gate_shape_ >= 0     ? in_.byte_in(gate_symbol_context(gate_shape_))

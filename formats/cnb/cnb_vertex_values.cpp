@@ -61,6 +61,11 @@ double VertexValues::estimated_bits(const GridPoint& p, const GridPoint& predict
 }
 
 namespace {
+// The context of the axes byte, given whether all three predictions are listed.
+int axes_byte_context(bool all_listed, ValueCoding coding) {
+  return axes_context(all_listed || coding != ValueCoding::by_listed_prediction);
+}
+
 // The context of the first byte of a value on `axis` (a rank or a difference, as `field`).
 int first_value_context(Field field, int axis, bool prediction_listed, ValueCoding coding) {
   switch (coding) {
@@ -72,44 +77,42 @@ int first_value_context(Field field, int axis, bool prediction_listed, ValueCodi
 }
 }  // namespace
 
+VertexValues::References VertexValues::references(const GridPoint& predicted, ValueCoding coding) const {
+  References r;
+  for (int k = 0; k < 3; ++k) r.place[k] = reference_place(k, predicted[k], coding, r.listed[k]);
+  r.all_listed = r.listed[0] && r.listed[1] && r.listed[2];
+  return r;
+}
+
 void VertexValues::write(ByteWriter& out, const GridPoint& p, const GridPoint& predicted, ValueCoding coding) {
-  GridPoint place, reference;
-  std::array<bool, 3> prediction_listed;
+  const References reference = references(predicted, coding);
+  GridPoint place;
   uint8_t known = 0;
   for (int k = 0; k < 3; ++k) {
     place[k] = place_of(sorted_[k], p[k]);
-    reference[k] = reference_place(k, predicted[k], coding, prediction_listed[k]);
     if (place[k] < static_cast<int64_t>(sorted_[k].size()) && sorted_[k][static_cast<size_t>(place[k])] == p[k])
       known |= static_cast<uint8_t>(1 << k);
   }
-  const bool all_listed = prediction_listed[0] && prediction_listed[1] && prediction_listed[2];
-  if (coding == ValueCoding::by_listed_prediction)
-    out.byte_in(known, axes_context(all_listed));
-  else
-    out.byte(known, Field::mesh_axes);
+  out.byte_in(known, axes_byte_context(reference.all_listed, coding));
   for (int k = 0; k < 3; ++k) {
     const Field field = known & (1 << k) ? Field::mesh_rank : Field::mesh_point;
-    const int64_t value = known & (1 << k) ? place[k] - reference[k] : p[k] - predicted[k];
-    out.varsint_in(value, field, first_value_context(field, k, prediction_listed[k], coding));
+    const int64_t value = known & (1 << k) ? place[k] - reference.place[k] : p[k] - predicted[k];
+    out.varsint_in(value, field, first_value_context(field, k, reference.listed[k], coding));
     remember(k, p[k], place[k]);
   }
 }
 
 GridPoint VertexValues::read(ByteReader& in, const GridPoint& predicted, ValueCoding coding) {
   const size_t known_at = in.offset();
-  GridPoint reference;
-  std::array<bool, 3> prediction_listed;
-  for (int k = 0; k < 3; ++k) reference[k] = reference_place(k, predicted[k], coding, prediction_listed[k]);
-  const bool all_listed = prediction_listed[0] && prediction_listed[1] && prediction_listed[2];
-  const uint8_t known =
-      coding == ValueCoding::by_listed_prediction ? in.byte_in(axes_context(all_listed)) : in.byte(Field::mesh_axes);
+  const References reference = references(predicted, coding);
+  const uint8_t known = in.byte_in(axes_byte_context(reference.all_listed, coding));
   if (known > 7) in.fail("vertex axis flags " + std::to_string(known) + " above 7", known_at);
   GridPoint p;
   for (int k = 0; k < 3; ++k) {
     const size_t at = in.offset();
     if (known & (1 << k)) {
       const int64_t rank =
-          reference[k] + in.varsint_in(Field::mesh_rank, first_value_context(Field::mesh_rank, k, prediction_listed[k], coding));
+          reference.place[k] + in.varsint_in(Field::mesh_rank, first_value_context(Field::mesh_rank, k, reference.listed[k], coding));
       if (rank < 0 || rank >= static_cast<int64_t>(sorted_[k].size()))
         in.fail("vertex value rank " + std::to_string(rank) + " outside the " + std::to_string(sorted_[k].size()) +
                     " values met",
@@ -117,7 +120,7 @@ GridPoint VertexValues::read(ByteReader& in, const GridPoint& predicted, ValueCo
       p[k] = sorted_[k][static_cast<size_t>(rank)];
       remember(k, p[k], rank);
     } else {
-      p[k] = predicted[k] + in.varsint_in(Field::mesh_point, first_value_context(Field::mesh_point, k, prediction_listed[k], coding));
+      p[k] = predicted[k] + in.varsint_in(Field::mesh_point, first_value_context(Field::mesh_point, k, reference.listed[k], coding));
       if (std::abs(static_cast<double>(p[k])) > 0x1p52) in.fail("vertex coordinate outside the grid's range", at);
       remember(k, p[k], place_of(sorted_[k], p[k]));
     }

@@ -50,6 +50,13 @@ class VertexValues {
  private:
   // Where ranks on `axis` are counted from for a prediction `predicted`, and whether it is listed.
   int64_t reference_place(int axis, int64_t predicted, ValueCoding coding, bool& listed) const;
+  // The same on every axis, and whether all three predictions are listed.
+  struct References {
+    GridPoint place;
+    std::array<bool, 3> listed;
+    bool all_listed;
+  };
+  References references(const GridPoint& predicted, ValueCoding coding) const;
   // Adds `value` to the axis's table at `place` (where lower_bound puts it) unless it is listed there.
   void remember(int axis, int64_t value, int64_t place);
   std::array<std::vector<int64_t>, 3> sorted_;
