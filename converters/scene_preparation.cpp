@@ -55,61 +55,10 @@ double default_deviation(double diagonal, const std::string& in) {
   return 1e-3 * diagonal;
 }
 
-namespace {
-// Whether two shapes hold the same trimmed surface: copies placed by compaction keep their original's
-// edge numbers, which join no two faces.
-bool same_surface(const Shape& a, const Shape& b) {
-  const auto* x = std::get_if<TrimmedSurface>(&a.geometry);
-  const auto* y = std::get_if<TrimmedSurface>(&b.geometry);
-  // Trims too: the two halves of a cylinder may be one surface, and share their seams.
-  const bool same_trims = x && y && x->loops.size() == y->loops.size() &&
-                          (x->loops.empty() || (!x->loops[0].segments.empty() && !y->loops[0].segments.empty() &&
-                                                segment_start(x->loops[0].segments[0]) ==
-                                                    segment_start(y->loops[0].segments[0])));
-  return same_trims && x->surface.points == y->surface.points && x->surface.u_knots == y->surface.u_knots &&
-         x->surface.v_knots == y->surface.v_knots && x->surface.weights == y->surface.weights;
-}
-
-// Whether the scene's trimming loops say which faces meet where: every face is trimmed, every loop names a
-// model edge for each of its segments, and two different faces (not copies) name the same edge. (OCCT
-// names every edge of an IGES file's faces, but each face has its own, a seam aside; compaction's
-// untrimmed faces and joined trims name none.)
-bool names_shared_edges(const Scene& scene) {
-  std::unordered_map<int, const Shape*> first_face;
-  bool every_loop = true, shared = false;
-  for_each_shape(scene, [&](const Shape& shape, const Eigen::Affine3d&, const Colour&) {
-    if (const auto* t = std::get_if<TrimmedSurface>(&shape.geometry)) {
-      every_loop = every_loop && !t->loops.empty();  // a domain's sides name nothing
-      for (const auto& loop : t->loops) {
-        every_loop = every_loop && loop.edges.size() == loop.segments.size();
-        for (const auto& ref : loop.edges)
-          if (ref.edge >= 0) {
-            const Shape* first = first_face.emplace(ref.edge, &shape).first->second;
-            shared = shared || (first != &shape && !same_surface(*first, shape));
-          }
-      }
-    }
-  });
-  return every_loop && shared;
-}
-}  // namespace
-
-bool sewn_when_meshed(const Scene& scene) {
-  const SceneCounts counts = count_entities(scene);
-  return counts.surfaces + counts.polygon_meshes > 0 && (counts.polygon_meshes > 0 || !names_shared_edges(scene));
-}
-
 CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, double max_deviation,
                              bool check_face_areas) {
-  CertifiedMesh result;
-  result.sewn = loaded.face_count == 0 && sewn_when_meshed(scene);
-  if (result.sewn) {
-    result.sewing_tolerance = sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), max_deviation);
-    result.faces = sew_faces(scene, result.sewing_tolerance, &result.sewing);
-  }
-  result.meshes =
-      tessellate_to_deviation(result.sewn ? result.faces : scene, max_deviation, &result.report, check_face_areas);
-  return result;
+  return certified_scene_mesh(scene, max_deviation, loaded.face_count > 0 ? EdgeSource::brep : EdgeSource::file,
+                              check_face_areas);
 }
 
 namespace {

@@ -2,6 +2,7 @@
 // How a read scene is made ready for a writer, shared by convert and report so that the report measures
 // exactly what convert writes: the compact NURBS form, and the certified mesh (sewn first when the file
 // named no edges).
+#include "analysis/certified_mesh/certified_scene_mesh.hpp"
 #include "analysis/compaction/compact_scene.hpp"
 #include "analysis/mesh/count_boundary_edges.hpp"
 #include "analysis/sewing/sew_faces.hpp"
@@ -32,28 +33,10 @@ double checked_mesh_diagonal(const TriangleMesh& mesh, const std::string& in);
 // points coincide: give --deviation" when the diagonal is 0 and so no size can be derived from it.
 double default_deviation(double diagonal, const std::string& in);
 
-struct CertifiedMesh {
-  Scene meshes;                 // one TriangleMesh shape per face; tree, names and colours kept
-  TessellationReport report;
-  bool sewn = false;            // the scene named no edges, so it was sewn first
-  Scene faces;                  // what was tessellated when sewn: the sewn faces, with shared-edge ids
-  SewingTolerance sewing_tolerance;
-  SewingReport sewing;
-};
-
-// Every NURBS face of `scene` tessellated within `max_deviation` (tessellate_to_deviation). A scene read
-// from a file that names no edges (loaded.face_count == 0: VRML/X3D, our own NURBS files) is sewn first
-// (sew_faces at sewing_tolerance(diagonal, D)), so that its mesh is as watertight as the B-rep's; unless
-// its loops carry shared-edge numbers and it holds no polygon sets (a .cnb of the exact NURBS): sewing
-// at D/4 would miss what the file already says, as the quantised trims of a .cnb at D may lie up to D
-// apart (as1-oc-214's .cnb at 1 mm: 236 pieces left open).
+// certified_scene_mesh (analysis/certified_mesh) of a scene read as `loaded` says: sewn first only when
+// no B-rep reader numbered its edges (loaded.face_count == 0: VRML/X3D, our own NURBS files).
 CertifiedMesh certified_mesh(const BrepTranslation& loaded, const Scene& scene, double max_deviation,
                              bool check_face_areas = false);
-
-// Whether certified_mesh sews `scene` when it comes from a file that names no edges (such as .cnb): it has
-// NURBS faces or polygon sets, and polygon sets, or an untrimmed face, or a loop without edge numbers, or
-// no edge number that two faces share.
-bool sewn_when_meshed(const Scene& scene);
 
 // convert --simplify D: the scene with knots removed (simplify_scene) and what certifies it.
 //  - Repeated parts are first placed as exact copies (instance_repeats at `written_tolerance`, as the

@@ -3,12 +3,14 @@
 #include <bit>
 #include <cstring>
 
+#include "core/bit_cast.hpp"
+
 namespace cadnurbs {
 
 std::uint64_t EqualPoints::hash(const Eigen::Vector3d& p) {
   std::uint64_t h = 0;
   for (int i = 0; i < 3; ++i) {
-    h = (h ^ std::bit_cast<std::uint64_t>(p[i])) * 0x9e3779b97f4a7c15ull;
+    h = (h ^ bit_cast<std::uint64_t>(p[i])) * 0x9e3779b97f4a7c15ull;
     h ^= h >> 29;
   }
   return h;

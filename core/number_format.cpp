@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "core/chars_to_double.hpp"
+
 namespace cadnurbs {
 
 namespace {
@@ -37,11 +39,23 @@ Decimal decimal_from_scientific(const char* first, const char* last) {
 // Scientific rendering with `significant` digits, or the shortest round trip when significant == 0.
 Decimal round_to(double value, int significant) {
   char buffer[64];
+#if defined(__cpp_lib_to_chars)
   const auto result = significant > 0
                           ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific,
                                           significant - 1)
                           : std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific);
   return decimal_from_scientific(buffer, result.ptr);
+#else
+  // The browser module's libc++ has no floating-point to_chars (chars_to_double.hpp). printf rounds
+  // correctly too; the shortest round trip is the fewest digits whose correct rounding reads back.
+  int written = 0;
+  for (int digits = significant > 0 ? significant : 1; digits <= 17; ++digits) {
+    written = std::snprintf(buffer, sizeof buffer, "%.*e", digits - 1, value);
+    double back = 0.0;
+    if (significant > 0 || (chars_to_double(buffer, buffer + written, back).ec == std::errc() && back == value)) break;
+  }
+  return decimal_from_scientific(buffer, buffer + written);
+#endif
 }
 
 // Plain notation, or exponent notation where that is shorter (plain on a tie, it reads better).
@@ -76,7 +90,7 @@ double parse(const Decimal& d) {
   const std::string text = (d.negative ? "-" : "") + d.digits.substr(0, 1) + "." + d.digits.substr(1) + "e" +
                            std::to_string(d.exponent);
   double value = 0.0;
-  std::from_chars(text.data(), text.data() + text.size(), value);
+  chars_to_double(text.data(), text.data() + text.size(), value);
   return value;
 }
 

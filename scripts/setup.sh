@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # setup.sh [demo]: installs what cadnurbs needs on Debian 12, skipping what is already there. With
 # `demo`, only what building and running the cadnurbs command needs (what `make demo` uses); without,
-# the tests' tools too (viewers, Chromium, clang for the fuzz targets, Slurm, the npm test drivers).
+# the tests' tools too (viewers, Chromium, clang for the fuzz targets, Emscripten and Debian's zlib source
+# for the browser module, Slurm, the npm test drivers).
 # Run as root (or with sudo available). Idempotent.
 set -euo pipefail
 
@@ -25,6 +26,7 @@ if [ "$scope" = all ]; then
     libgtest-dev libgmock-dev libbenchmark-dev
     view3dscene xvfb xauth chromium fonts-dejavu-core
     clang libclang-rt-14-dev
+    emscripten curl bzip2
     python3
     slurm-wlm munge
   )
@@ -71,4 +73,9 @@ if [ -f "$report_dir/package-lock.json" ]; then
   else
     echo "setup: report npm packages present"
   fi
+fi
+
+# Debian's zlib source, which the browser module (web/module) compiles with Emscripten.
+if [ "$scope" = all ]; then
+  "$here/scripts/fetch-zlib-source.sh" >/dev/null
 fi

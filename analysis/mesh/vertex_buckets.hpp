@@ -40,7 +40,10 @@ void visit_vertex_buckets(std::size_t vertex_count, std::size_t triangle_count, 
   });
   std::vector<std::uint64_t> values(triangle_count * static_cast<std::size_t>(per_triangle));
   on_workers(workers, [&](int w) {
-    const auto [first, end] = worker_range(vertex_count, w, workers);
+    // Named copies, not a structured binding: the lambda below uses them (clang 14, the browser module's
+    // compiler, cannot capture bindings).
+    const WorkerRange range = worker_range(vertex_count, w, workers);
+    const std::size_t first = range.begin, end = range.end;
     int offset = 0;
     for (int before = 0; before < w; ++before) offset += range_entries[before];
     for (std::size_t v = first + 1; v <= end; ++v) start[v] += offset;

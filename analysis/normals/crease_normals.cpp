@@ -158,7 +158,8 @@ CornerNormals crease_normals(const TriangleMesh& welded, double crease_angle_rad
   std::vector<char> cancelled(static_cast<size_t>(groups), 0);
   std::vector<char> cancelled_seen(workers, 0);
   on_workers(workers, [&](int w) {
-    const auto [first_group, end_group] = worker_range(static_cast<size_t>(groups), w, workers);
+    const WorkerRange range = worker_range(static_cast<size_t>(groups), w, workers);  // no binding: clang 14
+    const size_t first_group = range.begin, end_group = range.end;                     // cannot capture one
     auto mine = [&](size_t c) {
       const auto g = static_cast<size_t>(out.corner_normal[c]);
       return g >= first_group && g < end_group;

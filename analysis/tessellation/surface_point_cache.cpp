@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 
+#include "core/bit_cast.hpp"
+
 namespace cadnurbs::tessellation {
 
 namespace {
@@ -24,7 +26,7 @@ SurfacePointCache::SurfacePointCache(const SurfaceEvaluator& surface, std::size_
     : surface_(surface), slots_(std::min(kMaxSlots, std::bit_ceil(std::max<std::size_t>(64, 2 * expected)))) {}
 
 Eigen::Vector3d SurfacePointCache::point(double u, double v) {
-  const auto ku = std::bit_cast<std::uint64_t>(u), kv = std::bit_cast<std::uint64_t>(v);
+  const auto ku = bit_cast<std::uint64_t>(u), kv = bit_cast<std::uint64_t>(v);
   Slot& slot = slots_[slot_of(ku, kv, slots_.size() - 1)];
   if (slot.used && slot.u == ku && slot.v == kv) return slot.point;
   slot = {ku, kv, surface_.point(u, v), true};

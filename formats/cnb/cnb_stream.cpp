@@ -3,6 +3,8 @@
 #include <bit>
 #include <cstring>
 
+#include "core/bit_cast.hpp"
+
 namespace cadnurbs::cnb {
 
 int first_context(Field f) { return 2 * static_cast<int>(f); }
@@ -72,12 +74,12 @@ void ByteWriter::varuint_from(uint64_t value, Field field, int first) {
 void ByteWriter::varsint(int64_t value, Field field) { varuint(zigzag(value), field); }
 
 void ByteWriter::float64(double value) {
-  const uint64_t bits = std::bit_cast<uint64_t>(value);
+  const uint64_t bits = bit_cast<uint64_t>(value);
   for (int i = 0; i < 8; ++i) put(static_cast<uint8_t>(bits >> (8 * i)), float_context(i));
 }
 
 void ByteWriter::float32(float value) {
-  const uint32_t bits = std::bit_cast<uint32_t>(value);
+  const uint32_t bits = bit_cast<uint32_t>(value);
   for (int i = 0; i < 4; ++i) put(static_cast<uint8_t>(bits >> (8 * i)), float_context(4 + i));
 }
 
@@ -126,13 +128,13 @@ int64_t ByteReader::varsint(Field field) { return unzigzag(varuint(field)); }
 double ByteReader::float64() {
   uint64_t bits = 0;
   for (int i = 0; i < 8; ++i) bits |= static_cast<uint64_t>(take(float_context(i))) << (8 * i);
-  return std::bit_cast<double>(bits);
+  return bit_cast<double>(bits);
 }
 
 float ByteReader::float32() {
   uint32_t bits = 0;
   for (int i = 0; i < 4; ++i) bits |= static_cast<uint32_t>(take(float_context(4 + i))) << (8 * i);
-  return std::bit_cast<float>(bits);
+  return bit_cast<float>(bits);
 }
 
 std::string ByteReader::text() {

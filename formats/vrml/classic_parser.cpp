@@ -7,6 +7,7 @@
 #include <tuple>
 #include <stdexcept>
 
+#include "core/chars_to_double.hpp"
 #include "formats/common/file_io.hpp"
 #include "formats/vrml/parse_error.hpp"
 #include "formats/vrml/classic_tokenizer.hpp"
@@ -318,7 +319,7 @@ class ClassicParser {
     const char* last = first + token.text.size();
     if (*first == '+') ++first;
     double value = 0.0;
-    const auto result = std::from_chars(first, last, value);
+    const auto result = chars_to_double(first, last, value);
     if (result.ec == std::errc() && result.ptr == last) {
       if (!std::isfinite(value)) fail(token.line, "field " + field.text + ": '" + token.text + "' is not a finite number");
       return value;

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "core/chars_to_double.hpp"
 #include "core/equal_points.hpp"
 #include "formats/vrml/nurbs_tolerances.hpp"
 
@@ -22,7 +23,7 @@ NumberPrecision with_digits(double tolerance, const GeometryPrecision& p) {
 double written_value(double value, const NumberPrecision& precision) {
   const std::string text = format_number(value, precision);
   double parsed = 0.0;
-  std::from_chars(text.data(), text.data() + text.size(), parsed);
+  chars_to_double(text.data(), text.data() + text.size(), parsed);
   return parsed;
 }
 

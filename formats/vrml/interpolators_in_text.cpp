@@ -3,6 +3,7 @@
 #include <charconv>
 #include <functional>
 
+#include "core/chars_to_double.hpp"
 #include "formats/vrml/classic_tokenizer.hpp"
 #include "formats/vrml/parse_error.hpp"
 #include "formats/vrml/xml_markup.hpp"
@@ -20,7 +21,7 @@ bool is_interpolator_type(const std::string& name) {
 // A number's text (VRML allows a leading '+'), or false.
 bool parse_number(std::string_view text, double& value) {
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  const auto r = std::from_chars(text.data(), text.data() + text.size(), value);
+  const auto r = chars_to_double(text.data(), text.data() + text.size(), value);
   return r.ec == std::errc() && r.ptr == text.data() + text.size();
 }
 

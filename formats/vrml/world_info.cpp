@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/chars_to_double.hpp"
 #include "core/length_unit.hpp"
 #include "core/number_format.hpp"
 
@@ -41,7 +42,7 @@ WorldInfoConventions parse_world_info(const std::vector<std::string>& info) {
       if (name.empty()) throw std::invalid_argument("info \"" + line + "\" names no unit");
       double millimetres = 0.0;
       if (!size.empty()) {
-        const auto r = std::from_chars(size.data(), size.data() + size.size(), millimetres);
+        const auto r = chars_to_double(size.data(), size.data() + size.size(), millimetres);
         if (r.ec != std::errc() || r.ptr != size.data() + size.size() || !(millimetres > 0.0))
           throw std::invalid_argument("info \"" + line + "\": unit size is not a positive number");
       } else if (auto known = known_size(name)) {

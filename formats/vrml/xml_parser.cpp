@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/chars_to_double.hpp"
 #include "formats/vrml/field_integer.hpp"
 #include "formats/vrml/node_schema.hpp"
 #include "formats/vrml/parse_error.hpp"
@@ -274,7 +275,7 @@ class X3dBuilder {
       while (j < s.size() && !std::isspace(static_cast<unsigned char>(s[j])) && s[j] != ',') ++j;
       const char* first = s.data() + i + (s[i] == '+' ? 1 : 0);
       double v = 0.0;
-      const auto r = std::from_chars(first, s.data() + j, v);
+      const auto r = chars_to_double(first, s.data() + j, v);
       if (r.ec != std::errc() || r.ptr != s.data() + j || !std::isfinite(v))
         fail("field " + a.name + ": '" + s.substr(i, j - i) + "' is not a finite number", a.line);
       out.push_back(v);

@@ -1,0 +1,112 @@
+// The browser module's meshes against native ones (issue 40): for each file, the WebAssembly build of
+// web/api/scene_arrays (loaded in Node.js) and the native one (native_scene_arrays) mesh it within FRACTION
+// of its diagonal; they must give the same vertex, triangle and face counts, the same indices and face
+// ranges, positions within 1e-9 of the diagonal and normals within 1e-6.
+//
+//   node compare_with_native.mjs MODULE_DIR NATIVE_TOOL FRACTION OUT_DIR FILE...
+//
+// Prints one line per file (counts, largest position difference over the diagonal, both meshing times)
+// and exits 1 when any file differs or fails on one side only. A file both sides refuse with the same
+// message passes (the message is printed).
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdirSync, readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { basename, join } from 'node:path';
+
+const [moduleDir, nativeTool, fractionText, outDir, ...files] = process.argv.slice(2);
+if (!files.length) {
+  console.error('usage: node compare_with_native.mjs MODULE_DIR NATIVE_TOOL FRACTION OUT_DIR FILE...');
+  process.exit(2);
+}
+const fraction = Number(fractionText);
+if (!existsSync(join(moduleDir, 'cadnurbs_wasm.wasm'))) {
+  console.error(`${moduleDir}: the WebAssembly module is not built (it needs emcc and Debian's zlib source: scripts/setup.sh)`);
+  process.exit(1);
+}
+mkdirSync(outDir, { recursive: true });
+
+// Emscripten 3.1.6's ES module reaches for CommonJS names when it runs under Node.js.
+globalThis.__dirname = moduleDir;
+globalThis.require = createRequire(import.meta.url);
+const { loadCadnurbs } = await import(join(moduleDir, 'cadnurbs.mjs'));
+const cadnurbs = await loadCadnurbs({ wasmBinary: readFileSync(join(moduleDir, 'cadnurbs_wasm.wasm')) });
+
+function readNative(path) {
+  const b = readFileSync(path);
+  if (b.toString('latin1', 0, 4) !== 'CNSA') throw new Error(`${path}: not a native_scene_arrays dump`);
+  const vertices = b.readUInt32LE(4), triangles = b.readUInt32LE(8), faces = b.readUInt32LE(12);
+  let at = 16;
+  const doubles = (n) => { const a = new Float64Array(n); for (let i = 0; i < n; ++i, at += 8) a[i] = b.readDoubleLE(at); return a; };
+  const uints = (n) => { const a = new Uint32Array(n); for (let i = 0; i < n; ++i, at += 4) a[i] = b.readUInt32LE(at); return a; };
+  const floats = (n) => { const a = new Float32Array(n); for (let i = 0; i < n; ++i, at += 4) a[i] = b.readFloatLE(at); return a; };
+  const [diagonal, deviation, certifiedDeviation] = doubles(3);
+  return { diagonal, deviation, certifiedDeviation, positions: doubles(3 * vertices), indices: uints(3 * triangles),
+           faceFirstTriangle: uints(faces + 1), normals: floats(3 * vertices) };
+}
+
+function firstDifference(a, b) {
+  if (a.length !== b.length) return `lengths ${a.length} and ${b.length}`;
+  for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) return `at ${i}: ${a[i]} and ${b[i]}`;
+  return '';
+}
+
+function largestDifference(a, b) {
+  let d = 0;
+  for (let i = 0; i < a.length; ++i) d = Math.max(d, Math.abs(a[i] - b[i]));
+  return d;
+}
+
+let failures = 0;
+for (const file of files) {
+  const name = basename(file);
+  const dump = join(outDir, `${name}.native`);
+  let native, nativeError = '', nativeMs = 0;
+  try {
+    const start = performance.now();
+    execFileSync(nativeTool, [file, String(fraction), dump], { stdio: ['ignore', 'ignore', 'pipe'] });
+    nativeMs = performance.now() - start;
+    native = readNative(dump);
+  } catch (e) {
+    nativeError = (e.stderr ? e.stderr.toString() : e.message).trim();
+  }
+  let wasm, wasmError = '', wasmMs = 0;
+  try {
+    const start = performance.now();
+    const part = cadnurbs.read(readFileSync(file), file);
+    try {
+      wasm = part.mesh(fraction * part.diagonal);
+    } finally {
+      part.free();
+    }
+    wasmMs = performance.now() - start;
+  } catch (e) {
+    wasmError = e.message;
+  }
+  if (nativeError || wasmError) {
+    const same = nativeError === wasmError;
+    if (!same) ++failures;
+    console.log(`${name}\t${same ? 'both refuse' : 'DIFFERENT'}\tnative: ${nativeError || 'read'}\twasm: ${wasmError || 'read'}`);
+    continue;
+  }
+  const problems = [];
+  for (const field of ['indices', 'faceFirstTriangle']) {
+    const d = firstDifference(native[field], wasm[field]);
+    if (d) problems.push(`${field} differ (${d})`);
+  }
+  let positions = Infinity, normals = Infinity;
+  if (native.positions.length === wasm.positions.length) {
+    positions = largestDifference(native.positions, wasm.positions) / native.diagonal;
+    normals = largestDifference(native.normals, wasm.normals);
+  } else {
+    problems.push(`vertex counts ${native.positions.length / 3} and ${wasm.positions.length / 3}`);
+  }
+  if (!(positions <= 1e-9)) problems.push(`positions differ by ${positions} of the diagonal`);
+  if (!(normals <= 1e-6)) problems.push(`normals differ by ${normals}`);
+  if (problems.length) ++failures;
+  console.log(`${name}\t${problems.length ? 'DIFFERENT' : 'same'}\tvertices ${wasm.positions.length / 3}\t` +
+              `triangles ${wasm.indices.length / 3}\tfaces ${wasm.faceColours.length / 3}\t` +
+              `positions ${positions.toExponential(2)} of the diagonal\tnative ${nativeMs.toFixed(0)} ms\t` +
+              `wasm ${wasmMs.toFixed(0)} ms${problems.length ? '\t' + problems.join('; ') : ''}`);
+}
+console.log(`${files.length - failures} of ${files.length} files mesh alike`);
+process.exit(failures ? 1 : 0);
