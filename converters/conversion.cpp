@@ -23,7 +23,7 @@ constexpr double kSubdShareOfDeviation = 0.1;
 // The share of D a quantising format's mesh is tessellated to (the rest is the quantisation's).
 constexpr double kTessellationShare = 0.7;
 
-// A NURBS format that quantises (.cnb): --deviation is its bound, not a request for a mesh.
+// A NURBS format that quantises (.cnb, .html): --deviation is its bound, not a request for a mesh.
 bool quantises_nurbs(const FileFormat& format) { return format.quantises && !format.meshes_only; }
 
 // Takes the NURBS curves out of `node` and its children (a format that holds triangles only has no place
@@ -205,13 +205,13 @@ ConversionResult convert_scene(const ConversionRequest& request, const LoadedInp
       throw FileError(request.input + ": no geometry to write: its " + std::to_string(curves) +
                       " curves have no place in " + file_extension(request.output));
   }
-  if (quantises_nurbs(format) && !mesh) {  // .cnb: write_as_cnb's coding, with its report for the log
+  if (quantises_nurbs(format) && !mesh) {  // .cnb, .html: write_as_cnb's coding, with its report for the log
     const bool compacted = format.compact && !request.exact_nurbs;
     CnbCoding coding =
         cnb_coding(written, options.quantisation_budget, compacted ? &source : nullptr, !request.exact_nurbs);
     tell(log.coded, coding);
     result.deviation_basis += meshed_bodies_basis(coding.choice);
-    write_file_atomically(request.output, coding.bytes);
+    format.write_coded(request.output, coding.bytes);
     written = std::move(coding.scene);
   } else {
     write_scene(request.output, written, options);

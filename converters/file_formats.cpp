@@ -28,6 +28,7 @@
 #include "formats/stl/stl_writer.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 #include "formats/vrml/vrml_writer.hpp"
+#include "web/page/viewer_page.hpp"
 
 namespace cadnurbs {
 
@@ -132,11 +133,24 @@ void write_as_obj(const std::string& path, const Scene& scene, const SceneWriteO
 
 // .cnb: each body coded the cheapest way (NURBS or certified mesh) within the budget (the deviation asked
 // for); without one, within 1e-6 of the diagonal, the precision the text writers keep.
-void write_as_cnb(const std::string& path, const Scene& scene, const SceneWriteOptions& options) {
+std::string cnb_bytes(const Scene& scene, const SceneWriteOptions& options) {
   const auto box = scene_bounding_box(scene);
   const double budget = options.quantisation_budget > 0 ? options.quantisation_budget
                                                         : 1e-6 * (box.isEmpty() ? 1.0 : box.diagonal().norm());
-  write_file_atomically(path, cnb_coding(scene, budget).bytes);
+  return cnb_coding(scene, budget).bytes;
+}
+void write_coded_cnb(const std::string& path, const std::string& bytes) { write_file_atomically(path, bytes); }
+void write_as_cnb(const std::string& path, const Scene& scene, const SceneWriteOptions& options) {
+  write_coded_cnb(path, cnb_bytes(scene, options));
+}
+
+// .html: one self-contained page showing the part (web/page): its .cnb, as write_as_cnb writes it, with the
+// WebAssembly module and the viewer inlined; it works from a file:// URL with no network.
+void write_coded_html(const std::string& path, const std::string& bytes) {
+  write_file_atomically(path, viewer_page(bytes, std::filesystem::path(path).stem().string()));
+}
+void write_as_html(const std::string& path, const Scene& scene, const SceneWriteOptions& options) {
+  write_coded_html(path, cnb_bytes(scene, options));
 }
 
 // The quantisation resolutions a writer tries, coarsest first, stopping at the first within the budget.
@@ -250,7 +264,10 @@ const std::vector<FileFormat>& file_formats() {
       {"Rhino 3DM (openNURBS archive, Rhino 1-8)", {".3dm"}, false, false, false, read_rhino_3dm, nullptr},
       {"glTF 2.0 binary (Draco, meshopt or no compression)", {".glb"}, true, false, false, nullptr, write_as_glb, true},
       {"Draco mesh", {".drc"}, true, false, false, nullptr, write_as_drc, true},
-      {"cadnurbs compact binary NURBS (docs/cnb.md)", {".cnb"}, false, true, false, read_compact_binary, write_as_cnb, true},
+      {"cadnurbs compact binary NURBS (docs/cnb.md)", {".cnb"}, false, true, false, read_compact_binary, write_as_cnb, true,
+       LoopsOutsideDomain::refuse, write_coded_cnb},
+      {"web page showing the part (its .cnb and the viewer inlined; works offline)", {".html"}, false, true, false, nullptr,
+       write_as_html, true, LoopsOutsideDomain::refuse, write_coded_html},
   };
   return formats;
 }

@@ -49,6 +49,9 @@ struct FileFormat {
   bool quantises = false;  // its writer moves positions (SceneWriteOptions::quantisation_budget)
   // What its trimming loops far outside a surface's domain mean: a fault, or GLU's rule (VRML/X3D).
   LoopsOutsideDomain loops_outside_domain = LoopsOutsideDomain::refuse;
+  // A quantising NURBS format (.cnb, .html): writes the .cnb coding convert made (cnb_coding, with its
+  // report) as this format holds it, atomically. null for the others.
+  void (*write_coded)(const std::string& path, const std::string& cnb_bytes) = nullptr;
 };
 
 // Every format, inputs and outputs.

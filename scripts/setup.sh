@@ -75,6 +75,19 @@ if [ -f "$report_dir/package-lock.json" ]; then
   fi
 fi
 
+# The viewer's npm packages (three.js, esbuild), pinned by package-lock.json, bundled into the page that
+# `convert X -o X.html` writes (web/CMakeLists.txt).
+viewer_npm="$here/web/viewer"
+if [ "$scope" = all ]; then
+  if [ ! -d "$viewer_npm/node_modules/three" ] || [ ! -d "$viewer_npm/node_modules/esbuild" ] \
+     || [ "$viewer_npm/package-lock.json" -nt "$viewer_npm/node_modules/.package-lock.json" ]; then
+    echo "setup: npm ci in web/viewer"
+    (cd "$viewer_npm" && npm ci --no-audit --no-fund --loglevel=error)
+  else
+    echo "setup: viewer npm packages present"
+  fi
+fi
+
 # Debian's zlib source, which the browser module (web/module) compiles with Emscripten.
 if [ "$scope" = all ]; then
   "$here/scripts/fetch-zlib-source.sh" >/dev/null

@@ -5,19 +5,11 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "formats/web_text/markup_text.hpp"
 #include "report/html/report_html_assets.hpp"
 
 namespace cadnurbs {
 
-namespace {
-
-bool contains_ignoring_case(const std::string& text, const std::string& lower_needle) {
-  const auto found = std::search(text.begin(), text.end(), lower_needle.begin(), lower_needle.end(),
-                                 [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
-  return found != text.end();
-}
-
-}  // namespace
 
 const char* const base_page_style = R"css(
 body { font-family: sans-serif; margin: 1.5em auto; max-width: 1100px; padding: 0 1em; color: #222; background: #fff; }
@@ -28,22 +20,6 @@ td.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowra
 footer { margin-top: 3em; color: #555; font-size: 0.8em; }
 footer pre { white-space: pre-wrap; max-height: 20em; overflow: auto; }
 )css";
-
-std::string escape_html(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string script_json(const std::string& json) {
   std::string out;
@@ -62,10 +38,7 @@ std::string json_string(const std::string& text) {
 }
 
 const std::string& inline_script(const std::string& asset) {
-  const std::string& text = report_html_asset(asset);
-  if (contains_ignoring_case(text, "</script") || text.find("<!--") != std::string::npos)
-    throw std::runtime_error("HTML report: " + asset + " contains </script or <!-- and cannot be inlined");
-  return text;
+  return script_text(report_html_asset(asset), "HTML report: " + asset);
 }
 
 std::string grouped(long value) {

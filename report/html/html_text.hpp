@@ -3,13 +3,12 @@
 // JSON inside <script>, the inlined libraries, numbers people can read.
 #include <string>
 
+#include "formats/web_text/markup_text.hpp"  // escape_html
+
 namespace cadnurbs {
 
 // The stylesheet both pages start with: body, headings, tables, numbers in cells, the footer.
 extern const char* const base_page_style;
-
-// Markup-safe text for element content and quoted attribute values.
-std::string escape_html(const std::string& text);
 
 // JSON text made safe inside <script type="application/json">: in JSON '<' occurs only inside strings,
 // where \u003c means the same, so no "</script" or "<!--" can end or confuse the element.

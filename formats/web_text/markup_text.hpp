@@ -1,0 +1,15 @@
+#pragma once
+// Text put into an HTML page: escaped for element content and attributes, or checked fit to stand inside a
+// <script> element, whose text cannot be escaped.
+#include <string>
+
+namespace cadnurbs {
+
+// Markup-safe text for element content and quoted attribute values.
+std::string escape_html(const std::string& text);
+
+// `text` itself, or std::runtime_error "<what> contains </script or <!-- and cannot be inlined" where it
+// would end or confuse a <script> element.
+const std::string& script_text(const std::string& text, const std::string& what);
+
+}  // namespace cadnurbs

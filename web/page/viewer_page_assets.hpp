@@ -1,0 +1,15 @@
+#pragma once
+// What the viewer page inlines, embedded at build time (web/CMakeLists.txt, cmake/embed_assets.cmake):
+//   "page.html"              the page's template (web/viewer/page.html);
+//   "viewer.js"              the viewer with three.js, bundled by esbuild;
+//   "mesh_worker.js"         the worker with the module's JavaScript, bundled by esbuild;
+//   "cadnurbs_wasm.base64"   the module's WebAssembly, as base64;
+//   "versions", "licenses"   the npm packages bundled (three.js) and their licence texts.
+// Throws std::out_of_range for another name.
+#include <string>
+
+namespace cadnurbs {
+
+const std::string& viewer_page_asset(const std::string& name);
+
+}  // namespace cadnurbs

@@ -1,0 +1,192 @@
+// The cadnurbs part viewer: three.js draws the meshes the worker (mesh_worker.mjs) makes with the
+// WebAssembly module, coarse at once, then finer until every point is within one pixel of the exact part
+// in the current view (the deviation is the world size of a pixel at the part's nearest point); orbit,
+// fit to view, the faces' colours, and on screen the triangle count and the deviation the mesh is
+// certified within. window.cadnurbsViewer says what the viewer did, for tests and for the curious.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+
+const coarseFraction = 1e-2;     // of the diagonal: the first mesh, at once
+const finestFraction = 1e-5;     // of the diagonal: no finer, however close the camera comes
+const refineRatio = 1.5;         // a new mesh only when the wanted deviation is this much finer
+
+function base64Bytes(text) {
+  const binary = atob(text.trim());
+  const bytes = new Uint8Array(binary.length);
+  for (let i = 0; i < binary.length; ++i) bytes[i] = binary.charCodeAt(i);
+  return bytes;
+}
+
+function formatLength(value) {
+  return value >= 1 ? value.toPrecision(3) : value.toExponential(2);
+}
+
+// Starts the viewer in `container` on the part's bytes. `workerUrl`: the worker's script; `hud`: an element
+// for the status line.
+export async function startViewer({ container, hud, partBytes, wasmBytes, workerUrl, name }) {
+  const state = {
+    name, started: performance.now(), error: '', frames: 0, longestFrameGap: 0, meshes: [],
+    openedMs: null, firstFrameMs: null, subPixelMs: null, deviation: null, triangles: 0, refining: false,
+  };
+  window.cadnurbsViewer = state;
+  // The worker first, and WebGL only once its script runs: starting a worker needs this thread, which
+  // WebGL's start holds for a while; then the worker compiles the module and reads the part meanwhile.
+  const worker = new Worker(workerUrl);
+  const running = new Promise((resolve) => { worker.onmessage = ({ data }) => data.type === 'started' && resolve(); });
+  const wasm = wasmBytes.buffer.slice(wasmBytes.byteOffset, wasmBytes.byteOffset + wasmBytes.byteLength);
+  const bytes = partBytes.buffer.slice(partBytes.byteOffset, partBytes.byteOffset + partBytes.byteLength);
+  worker.postMessage({ type: 'open', wasm, bytes, name }, [wasm, bytes]);
+  await running;
+  state.workerMs = performance.now() - state.started;
+  const renderer = new THREE.WebGLRenderer({ antialias: true });
+  state.webglMs = performance.now() - state.started;
+  renderer.setPixelRatio(window.devicePixelRatio);
+  container.appendChild(renderer.domElement);
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(1, 1, 1);
+  const camera = new THREE.PerspectiveCamera(35, 1, 1, 10);
+  scene.add(camera);
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x666666, 1.6));
+  const light = new THREE.DirectionalLight(0xffffff, 1.6);
+  light.position.set(1, 1, 2);
+  camera.add(light);
+  const controls = new OrbitControls(camera, renderer.domElement);
+  const material = new THREE.MeshStandardMaterial({ vertexColors: true, side: THREE.DoubleSide, roughness: 0.6, metalness: 0.1 });
+  let object = null, diagonal = 0, sphere = null, pending = false, id = 0;
+
+  const resize = () => {
+    const width = container.clientWidth || window.innerWidth, height = container.clientHeight || window.innerHeight;
+    renderer.setSize(width, height);
+    camera.aspect = width / height;
+    camera.updateProjectionMatrix();
+  };
+  window.addEventListener('resize', resize);
+  resize();
+
+  const show = (text) => { if (hud) hud.textContent = text; };
+  const fail = (message) => { state.error = message; show(`${name}: ${message}`); };
+
+  // The deviation one pixel of the view allows at the part's nearest point.
+  const pixelDeviation = () => {
+    const distance = camera.position.distanceTo(sphere.center) - sphere.radius;
+    const nearest = Math.max(distance, camera.near);
+    const pixels = renderer.domElement.height;
+    const pixel = (2 * nearest * Math.tan(THREE.MathUtils.degToRad(camera.fov) / 2)) / pixels;
+    return Math.max(pixel, finestFraction * diagonal);
+  };
+
+  const fit = () => {
+    const distance = sphere.radius / Math.sin(THREE.MathUtils.degToRad(camera.fov) / 2);
+    const direction = new THREE.Vector3(1, -1.4, 0.9).normalize();
+    camera.position.copy(sphere.center).addScaledVector(direction, distance);
+    camera.up.set(0, 0, 1);
+    camera.near = distance / 100;
+    camera.far = distance * 10;
+    camera.updateProjectionMatrix();
+    controls.target.copy(sphere.center);
+    controls.update();
+  };
+
+  const ask = (deviation) => {
+    pending = true;
+    state.refining = true;
+    worker.postMessage({ type: 'mesh', id: ++id, deviation });
+  };
+  const refine = () => {
+    if (pending || !sphere) return;
+    const wanted = pixelDeviation();
+    if (wanted * refineRatio < state.deviation) {
+      ask(wanted);
+    } else if (state.refining) {
+      state.refining = false;
+      if (state.subPixelMs === null) state.subPixelMs = performance.now() - state.started;
+    }
+    status();
+  };
+  const status = () => show(`${name} · ${state.triangles.toLocaleString()} triangles · within ${formatLength(state.deviation)}` +
+                            ` (certified ${formatLength(state.certified)}) · ${state.refining ? 'refining…' : 'below one pixel'}`);
+
+  const place = (m) => {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(m.positions, 3));
+    geometry.setAttribute('normal', new THREE.BufferAttribute(m.normals, 3));
+    const colours = new Float32Array(m.positions.length);
+    const faces = m.faceColours.length / 3;
+    for (let f = 0; f < faces; ++f)
+      for (let t = m.faceFirstTriangle[f]; t < m.faceFirstTriangle[f + 1]; ++t)
+        for (let k = 0; k < 3; ++k) colours.set(m.faceColours.subarray(3 * f, 3 * f + 3), 3 * m.indices[3 * t + k]);
+    geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+    geometry.setIndex(new THREE.BufferAttribute(m.indices, 1));
+    geometry.computeBoundingSphere();
+    if (object) {
+      scene.remove(object);
+      object.geometry.dispose();
+    }
+    object = new THREE.Mesh(geometry, material);
+    scene.add(object);
+    dirty = true;
+    if (!sphere) {
+      sphere = geometry.boundingSphere.clone();
+      fit();
+    }
+  };
+
+  worker.onmessage = ({ data }) => {
+    if (data.type === 'error') return fail(data.message);
+    if (data.type === 'opened') {
+      diagonal = data.diagonal;
+      state.openedMs = performance.now() - state.started;
+      state.moduleMs = data.moduleMs;
+      state.readMs = data.readMs;
+      if (!(diagonal > 0)) return fail('the part is empty');
+      return ask(coarseFraction * diagonal);
+    }
+    pending = false;
+    place(data);
+    state.deviation = data.deviation;
+    state.certified = data.certifiedDeviation;
+    state.triangles = data.indices.length / 3;
+    state.meshes.push({ deviation: data.deviation, triangles: state.triangles, milliseconds: data.milliseconds,
+                        at: performance.now() - state.started });
+    requestAnimationFrame(() => {
+      if (state.firstFrameMs === null) state.firstFrameMs = performance.now() - state.started;
+      refine();
+    });
+  };
+  worker.onerror = (event) => fail(event.message || 'the worker failed');
+  controls.addEventListener('end', refine);
+
+  // Drawn when something changed (a mesh, the camera, the size); the frame loop runs regardless, so that
+  // its gaps show whether the page is free.
+  let dirty = false;  // nothing to draw before the first mesh
+  controls.addEventListener('change', () => { dirty = true; });
+  window.addEventListener('resize', () => { dirty = true; });
+  let last = performance.now();
+  // Frame gaps count while refining after the first frame with the part (that one compiles the shaders).
+  const frame = (now) => {
+    if (state.refining && state.firstFrameMs !== null) state.longestFrameGap = Math.max(state.longestFrameGap, now - last);
+    last = now;
+    ++state.frames;
+    controls.update();
+    if (dirty) {
+      dirty = false;
+      renderer.render(scene, camera);
+    }
+    requestAnimationFrame(frame);
+  };
+  requestAnimationFrame(frame);
+
+  show(`${name}: reading…`);
+  return state;
+}
+
+// A self-contained page (page.html): the part, the module and the worker's script are in its own elements.
+export function startEmbeddedViewer() {
+  const text = (id) => document.getElementById(id).textContent;
+  const workerUrl = URL.createObjectURL(new Blob([text('cadnurbs-worker')], { type: 'text/javascript' }));
+  return startViewer({
+    container: document.getElementById('cadnurbs-view'), hud: document.getElementById('cadnurbs-hud'),
+    partBytes: base64Bytes(text('cadnurbs-part')), wasmBytes: base64Bytes(text('cadnurbs-wasm')), workerUrl,
+    name: document.getElementById('cadnurbs-part').dataset.name,
+  });
+}
