@@ -46,7 +46,9 @@ std::vector<Cut> cuts_of(const Piece& piece, const SurfaceEvaluator& surface,
     const CurveProjection foot = project_to_piece(piece, surface, p);
     if (foot.distance <= tolerance && foot.t > t0 && foot.t < t1) cuts.push_back({foot.t, v});
   }
-  std::sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) { return a.t < b.t; });
+  // Ties broken by vertex, so that every standard library gives one order (the browser module's too).
+  std::sort(cuts.begin(), cuts.end(),
+            [](const Cut& a, const Cut& b) { return a.t < b.t || (a.t == b.t && a.vertex.value < b.vertex.value); });
   return cuts;
 }
 
@@ -151,7 +153,9 @@ std::vector<Piece> cut_at_vertices(const std::vector<Piece>& pieces, const std::
                                    SewingReport& report) {
   std::vector<int> by_x(vertices.size());
   for (size_t v = 0; v < vertices.size(); ++v) by_x[v] = static_cast<int>(v);
-  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return vertices[a].x() < vertices[b].x(); });
+  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) {  // ties by index: one order on every library
+    return vertices[a].x() < vertices[b].x() || (vertices[a].x() == vertices[b].x() && a < b);
+  });
   std::vector<Piece> cut;
   for (const auto& p : pieces) {
     const SurfaceEvaluator& surface = *faces[p.face].surface;

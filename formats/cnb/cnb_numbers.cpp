@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "formats/cnb/cnb_exp2.hpp"
+
 namespace cadnurbs::cnb {
 
 int64_t on_grid(double x, double step) {
@@ -270,7 +272,7 @@ std::vector<double> read_weights_of_mode(ByteReader& in, uint8_t mode, size_t mo
       if (std::abs(static_cast<double>(r)) > 0x1p52 || std::abs(static_cast<double>(n) + static_cast<double>(r)) > 0x1p52)
         in.fail("weight exponent out of range", at);
       n += r;
-      w = std::exp2(static_cast<double>(n) * step);
+      w = cnb_exp2(static_cast<double>(n) * step);
       if (!(w > 0) || !std::isfinite(w)) in.fail("weight 2^(" + std::to_string(n) + " x " + std::to_string(step) + ") is not positive and finite", at);
     }
     return weights;
