@@ -38,55 +38,31 @@ if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
 fi
 "$here/scripts/install-debian-packages.sh" setup "${debian_packages[@]}"
 
-# Viewer test drivers (x_ite, playwright-core), pinned by package-lock.json.
-viewer_dir="$here/tests/viewers"
-if [ "$scope" = all ] && [ -f "$viewer_dir/package-lock.json" ]; then
-  if [ ! -d "$viewer_dir/node_modules/x_ite" ] || [ ! -d "$viewer_dir/node_modules/playwright-core" ] \
-     || [ "$viewer_dir/package-lock.json" -nt "$viewer_dir/node_modules/.package-lock.json" ]; then
-    echo "setup: npm ci in tests/viewers"
-    (cd "$viewer_dir" && npm ci --no-audit --no-fund --loglevel=error)
-  else
-    echo "setup: npm packages present"
-  fi
-fi
+# npm_ci FOLDER PACKAGE...: `npm ci` in FOLDER (relative to the project) unless each PACKAGE is installed
+# there and its package-lock.json is no newer than what npm installed from it.
+npm_ci() {
+  local dir="$here/$1" package
+  shift
+  [ -f "$dir/package-lock.json" ] || return 0
+  for package in "$@"; do
+    if [ ! -d "$dir/node_modules/$package" ] || [ "$dir/package-lock.json" -nt "$dir/node_modules/.package-lock.json" ]; then
+      echo "setup: npm ci in ${dir#"$here"/}"
+      (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error)
+      return 0
+    fi
+  done
+  echo "setup: npm packages present in ${dir#"$here"/}"
+}
 
-# The .3dm test-file generator (rhino3dm), pinned by package-lock.json; the 3dm tests run it at test time.
-rhino3dm_dir="$here/tests/3dm/generate"
-if [ "$scope" = all ] && [ -f "$rhino3dm_dir/package-lock.json" ]; then
-  if [ ! -d "$rhino3dm_dir/node_modules/rhino3dm" ] \
-     || [ "$rhino3dm_dir/package-lock.json" -nt "$rhino3dm_dir/node_modules/.package-lock.json" ]; then
-    echo "setup: npm ci in tests/3dm/generate"
-    (cd "$rhino3dm_dir" && npm ci --no-audit --no-fund --loglevel=error)
-  else
-    echo "setup: rhino3dm npm package present"
-  fi
-fi
-
-# What the HTML report inlines (Chart.js, X_ITE), pinned by package-lock.json and embedded into the
-# library at build time (report/html/CMakeLists.txt).
-report_dir="$here/report/html"
-if [ -f "$report_dir/package-lock.json" ]; then
-  if [ ! -d "$report_dir/node_modules/chart.js" ] || [ ! -d "$report_dir/node_modules/x_ite" ] \
-     || [ "$report_dir/package-lock.json" -nt "$report_dir/node_modules/.package-lock.json" ]; then
-    echo "setup: npm ci in report/html"
-    (cd "$report_dir" && npm ci --no-audit --no-fund --loglevel=error)
-  else
-    echo "setup: report npm packages present"
-  fi
-fi
-
-# The viewer's npm packages (three.js, esbuild), pinned by package-lock.json, bundled into the page that
-# `convert X -o X.html` writes (web/CMakeLists.txt).
-viewer_npm="$here/web/viewer"
 if [ "$scope" = all ]; then
-  if [ ! -d "$viewer_npm/node_modules/three" ] || [ ! -d "$viewer_npm/node_modules/esbuild" ] \
-     || [ "$viewer_npm/package-lock.json" -nt "$viewer_npm/node_modules/.package-lock.json" ]; then
-    echo "setup: npm ci in web/viewer"
-    (cd "$viewer_npm" && npm ci --no-audit --no-fund --loglevel=error)
-  else
-    echo "setup: viewer npm packages present"
-  fi
+  npm_ci tests/viewers x_ite playwright-core      # the viewer test drivers
+  npm_ci tests/3dm/generate rhino3dm              # the .3dm test-file generator, run at test time
+  # The viewer (three.js) and its bundler, bundled into the page `convert X -o X.html` writes (web/CMakeLists.txt).
+  npm_ci web/viewer three esbuild
 fi
+# What the HTML report inlines (Chart.js, X_ITE), embedded into the library at build time
+# (report/html/CMakeLists.txt); the demo builds it too.
+npm_ci report/html chart.js x_ite
 
 # Debian's zlib source, which the browser module (web/module) compiles with Emscripten.
 if [ "$scope" = all ]; then

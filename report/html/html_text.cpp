@@ -1,9 +1,6 @@
 #include "report/html/html_text.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 
 #include "formats/web_text/markup_text.hpp"
 #include "report/html/report_html_assets.hpp"

@@ -11,7 +11,6 @@
 #include <fstream>
 #include <string>
 
-#include "core/bounding_box.hpp"
 #include "formats/common/file_io.hpp"
 #include "web/api/scene_arrays.hpp"
 
@@ -38,8 +37,7 @@ int main(int argc, char** argv) {
   }
   try {
     const Scene scene = read_scene_bytes(read_file(argv[1]), argv[1]);
-    const Eigen::AlignedBox3d box = scene_bounding_box(scene);
-    const double diagonal = box.isEmpty() ? 0.0 : box.diagonal().norm();
+    const double diagonal = scene_diagonal(scene);
     const double deviation = std::stod(argv[2]) * diagonal;
     const SceneArrays arrays = certified_scene_arrays(scene, deviation);
     std::ofstream out(argv[3], std::ios::binary);

@@ -4,6 +4,7 @@
 
 #include "analysis/certified_mesh/certified_scene_mesh.hpp"
 #include "analysis/normals/crease_normals.hpp"
+#include "core/bounding_box.hpp"
 #include "formats/cnb/cnb_reader.hpp"
 #include "formats/vrml/vrml_reader.hpp"
 
@@ -59,6 +60,11 @@ Scene read_scene_bytes(const std::string& bytes, const std::string& name) {
   for (const Reader& reader : readers)
     if (reader.matches(bytes)) return reader.read(bytes, name);
   throw std::logic_error("read_scene_bytes: no reader");  // the last reader takes anything
+}
+
+double scene_diagonal(const Scene& scene) {
+  const Eigen::AlignedBox3d box = scene_bounding_box(scene);
+  return box.isEmpty() ? 0.0 : box.diagonal().norm();
 }
 
 SceneArrays certified_scene_arrays(const Scene& scene, double max_deviation, double crease_angle) {

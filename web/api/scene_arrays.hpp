@@ -14,6 +14,10 @@ namespace cadnurbs {
 // by content, as parse_vrml does). Throws FileError "<name>: ..." as read_cnb and parse_vrml do.
 Scene read_scene_bytes(const std::string& bytes, const std::string& name);
 
+// The diagonal of the scene's bounding box (control points and vertices, placed); 0 for an empty scene.
+// Deviations asked of certified_scene_arrays are fractions of it.
+double scene_diagonal(const Scene& scene);
+
 // A scene's certified mesh (certified_scene_mesh, its faces sewn as `convert --mesh` sews a file of
 // faces), flattened: one vertex per position and normal, in world coordinates (the nodes' transforms
 // applied, a mirroring one turning its triangles round). Meshes the file holds keep their normals, or get

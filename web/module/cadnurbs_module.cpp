@@ -7,7 +7,6 @@
 #include <exception>
 #include <string>
 
-#include "core/bounding_box.hpp"
 #include "web/api/scene_arrays.hpp"
 
 using cadnurbs::Scene;
@@ -46,11 +45,8 @@ EMSCRIPTEN_KEEPALIVE Scene* cn_read(const char* bytes, size_t size, const char* 
 
 EMSCRIPTEN_KEEPALIVE void cn_scene_free(Scene* scene) { delete scene; }
 
-// The diagonal of the scene's bounding box (control points and vertices, placed); 0 for an empty scene.
-EMSCRIPTEN_KEEPALIVE double cn_scene_diagonal(const Scene* scene) {
-  const Eigen::AlignedBox3d box = cadnurbs::scene_bounding_box(*scene);
-  return box.isEmpty() ? 0.0 : box.diagonal().norm();
-}
+// scene_diagonal (web/api/scene_arrays.hpp).
+EMSCRIPTEN_KEEPALIVE double cn_scene_diagonal(const Scene* scene) { return cadnurbs::scene_diagonal(*scene); }
 
 // The certified mesh of `scene` within `deviation` (the scene's units).
 EMSCRIPTEN_KEEPALIVE SceneArrays* cn_mesh(const Scene* scene, double deviation, char* error, size_t error_size) {

@@ -53,12 +53,16 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, worker
   const controls = new OrbitControls(camera, renderer.domElement);
   const material = new THREE.MeshStandardMaterial({ vertexColors: true, side: THREE.DoubleSide, roughness: 0.6, metalness: 0.1 });
   let object = null, diagonal = 0, sphere = null, pending = false, id = 0;
+  // Drawn when something changed (a mesh, the camera, the size); the frame loop runs regardless, so that
+  // its gaps show whether the page is free. Nothing to draw before the first mesh.
+  let dirty = false;
 
   const resize = () => {
     const width = container.clientWidth || window.innerWidth, height = container.clientHeight || window.innerHeight;
     renderer.setSize(width, height);
     camera.aspect = width / height;
     camera.updateProjectionMatrix();
+    dirty = object !== null;
   };
   window.addEventListener('resize', resize);
   resize();
@@ -156,11 +160,7 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, worker
   worker.onerror = (event) => fail(event.message || 'the worker failed');
   controls.addEventListener('end', refine);
 
-  // Drawn when something changed (a mesh, the camera, the size); the frame loop runs regardless, so that
-  // its gaps show whether the page is free.
-  let dirty = false;  // nothing to draw before the first mesh
   controls.addEventListener('change', () => { dirty = true; });
-  window.addEventListener('resize', () => { dirty = true; });
   let last = performance.now();
   // Frame gaps count while refining after the first frame with the part (that one compiles the shaders).
   const frame = (now) => {
