@@ -1,5 +1,7 @@
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <thread>
 
@@ -43,6 +45,11 @@ const CommandSpec& batch_command_spec() {
            "only the K-th (0 to N-1) of N disjoint slices of the parts (cluster array\n"
            "tasks); its report is OUT_DIR/report-K-of-N.*"},
           {"merge", "", "the combined report of every record under OUT_DIR (all shards')"},
+          {"site", "DIR",
+           "also the library as a static site in DIR (adds cnb to --to): index.html (every\n"
+           "part's picture, family and bytes, the site's size against the meshes the\n"
+           "library ships beside the parts), a page per part showing it in the browser\n"
+           "viewer, the shared viewer and module once; serve DIR over HTTP"},
       },
       "Exit status 0 when every part converted, 3 when some failed.",
   };
@@ -63,6 +70,13 @@ std::vector<std::string> split_list(const std::string& text) {
   return items;
 }
 
+// "0.0123x": a share of another size, to three significant digits.
+std::string ratio_text(long part, long whole) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3gx", static_cast<double>(part) / whole);
+  return text;
+}
+
 }  // namespace
 
 int run_batch(const std::vector<std::string>& args, const CommandContext& context) {
@@ -73,6 +87,8 @@ int run_batch(const std::vector<std::string>& args, const CommandContext& contex
   }
   if (a.has("merge")) {
     if (a.positional.size() != 1) throw UsageError("--merge needs the one OUT_DIR of the shards");
+    if (a.has("site"))
+      throw UsageError("--site needs the library: run batch IN_DIR -o OUT_DIR --site DIR (done parts are reused)");
     const BatchSummary s = merge_batch(a.positional[0]);
     std::cout << a.positional[0] << ": " << s.parts << " parts, " << s.failed
               << " failed; report.md, report.json, report.csv, report.html\n";
@@ -93,6 +109,11 @@ int run_batch(const std::vector<std::string>& args, const CommandContext& contex
   for (auto& target : options.targets) {
     if (target.front() == '.') target.erase(0, 1);
     output_format("x." + target);  // refuses an unknown one before any work
+  }
+  if (a.has("site")) {
+    options.site_dir = a.value("site");
+    if (std::find(options.targets.begin(), options.targets.end(), "cnb") == options.targets.end()) options.targets.push_back("cnb");
+    if (a.has("shard")) throw UsageError("--site needs the whole library, not a --shard");
   }
   if (a.has("inputs")) {
     for (const auto& name : split_list(a.value("inputs"))) options.inputs.push_back(&named_input_format(name));
@@ -122,6 +143,16 @@ int run_batch(const std::vector<std::string>& args, const CommandContext& contex
   const BatchSummary s = convert_library(options);
   std::cout << options.out_dir << ": " << s.parts << " parts: " << s.converted << " converted now, " << s.reused
             << " done before, " << s.failed << " failed\n";
+  if (s.site) {
+    const SiteTotals& t = s.site->totals;
+    std::cout << options.site_dir << ": " << s.site->pages << " part pages (" << s.site->pictures_failed
+              << " without a picture), " << t.site() << " bytes (" << t.gzip << " gzip'd): shared " << t.shared
+              << ", pages " << t.pages << ", .cnb " << t.cnb << ", pictures " << t.thumbnails << ", index " << t.index << "\n";
+    if (t.parts_with_library_mesh > 0)
+      std::cout << "the library's meshes of " << t.parts_with_library_mesh << " of these parts: " << t.library_mesh
+                << " bytes (" << t.library_mesh_gzip << " gzip'd); the site is " << ratio_text(t.site(), t.library_mesh)
+                << " of them (" << ratio_text(t.gzip, t.library_mesh_gzip) << " gzip'd)\n";
+  }
   return s.failed > 0 ? kSomeFailed : 0;
 }
 

@@ -231,6 +231,8 @@ BatchSummary convert_library(const BatchOptions& options) {
   const std::string name = options.shards > 1 ? "report-" + std::to_string(options.shard) + "-of-" + std::to_string(options.shards)
                                               : "report";
   write_reports(options.out_dir, name, records);
+  if (!options.site_dir.empty())
+    summary.site = write_site({options.in_dir, options.out_dir, options.site_dir, options.jobs, limits}, parts, records);
   return summary;
 }
 

@@ -7,4 +7,8 @@ namespace cadnurbs {
 
 std::string base64(const std::string& bytes);
 
+// The bytes `text` codes (base64 as above; whitespace skipped). Throws std::invalid_argument at a character
+// that is not base64 or a length that is not whole.
+std::string bytes_of_base64(const std::string& text);
+
 }  // namespace cadnurbs

@@ -38,4 +38,26 @@ const std::string& script_text(const std::string& text, const std::string& what)
   return text;
 }
 
+std::string grouped(long value) {
+  std::string digits = std::to_string(value < 0 ? -value : value);
+  for (int at = int(digits.size()) - 3; at > 0; at -= 3) digits.insert(std::size_t(at), "\u202f");
+  return value < 0 ? "-" + digits : digits;
+}
+
+std::string url_path(const std::string& path) {
+  static const char hex[] = "0123456789ABCDEF";
+  std::string out;
+  for (const char c : path) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (std::isalnum(byte) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') {
+      out += c;
+    } else {
+      out += '%';
+      out += hex[byte >> 4];
+      out += hex[byte & 15];
+    }
+  }
+  return out;
+}
+
 }  // namespace cadnurbs

@@ -38,10 +38,4 @@ const std::string& inline_script(const std::string& asset) {
   return script_text(report_html_asset(asset), "HTML report: " + asset);
 }
 
-std::string grouped(long value) {
-  std::string digits = std::to_string(value < 0 ? -value : value);
-  for (int at = int(digits.size()) - 3; at > 0; at -= 3) digits.insert(std::size_t(at), "\u202f");
-  return value < 0 ? "-" + digits : digits;
-}
-
 }  // namespace cadnurbs

@@ -3,7 +3,7 @@
 // JSON inside <script>, the inlined libraries, numbers people can read.
 #include <string>
 
-#include "formats/web_text/markup_text.hpp"  // escape_html
+#include "formats/web_text/markup_text.hpp"  // escape_html, grouped
 
 namespace cadnurbs {
 
@@ -21,8 +21,5 @@ std::string json_string(const std::string& text);
 // escaped, so one that would end the element early is refused with std::runtime_error naming it (none
 // of the pinned versions does; a new version is caught here).
 const std::string& inline_script(const std::string& asset);
-
-// 1234567 -> "1 234 567" (narrow no-break spaces): byte counts people can read.
-std::string grouped(long value);
 
 }  // namespace cadnurbs

@@ -3,26 +3,61 @@
 // (only file:, data: and blob: URLs).
 //
 //   node viewer_page_check.mjs [--width 1600] [--height 1200] [--timeout 60] [--screenshots DIR] PAGE...
+//   node viewer_page_check.mjs --site DIR [--sample N] [options as above] [PAGE...]
+//
+// With --site, DIR (what `batch --site` wrote) is served over HTTP on 127.0.0.1 and PAGEs are paths under
+// it; --sample N adds N part pages spread evenly over the site's index. Requests may go to that server only,
+// and none may fail; every link and picture of index.html must name a file of the site.
 //
 // Prints a line per page: triangles, the final deviation, when the first frame and the sub-pixel mesh
 // came (milliseconds after the viewer started), and the longest gap between frames while refining; exit 1
 // when a page fails. Chromium: CHROMIUM, default /usr/bin/chromium; playwright-core from tests/viewers.
-import { mkdirSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync } from 'node:fs';
+import { createServer } from 'node:http';
 import { createRequire } from 'node:module';
-import { basename, join, resolve } from 'node:path';
+import { basename, extname, join, normalize, resolve, sep } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 const require = createRequire(join(import.meta.dirname ?? new URL('.', import.meta.url).pathname, '../viewers/package.json'));
 const { chromium } = require('playwright-core');
 
-const options = { width: 1600, height: 1200, timeout: 60, screenshots: '' };
+const options = { width: 1600, height: 1200, timeout: 60, screenshots: '', site: '', sample: 0 };
 const pages = [];
 for (let a = process.argv.slice(2), i = 0; i < a.length; ++i) {
   if (a[i].startsWith('--')) options[a[i].slice(2)] = a[++i];
   else pages.push(a[i]);
 }
+let origin = '', server = null, failures = 0;
+const siteProblems = [];
+if (options.site) {
+  const root = resolve(options.site);
+  const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm', '.png': 'image/png',
+                  '.txt': 'text/plain', '.cnb': 'application/octet-stream' };
+  server = createServer((request, response) => {
+    const path = normalize(join(root, decodeURIComponent(new URL(request.url, 'http://x').pathname)));
+    if (!(path + sep).startsWith(root + sep) || !existsSync(path)) {
+      siteProblems.push(`not found: ${request.url}`);
+      response.writeHead(404).end();
+      return;
+    }
+    response.writeHead(200, { 'Content-Type': types[extname(path)] || 'application/octet-stream' }).end(readFileSync(path));
+  });
+  await new Promise((ready) => server.listen(0, '127.0.0.1', ready));
+  origin = `http://127.0.0.1:${server.address().port}`;
+  // The index's links and pictures, each a file of the site; the part pages among them for --sample.
+  const index = readFileSync(join(root, 'index.html'), 'utf8');
+  const named = [...index.matchAll(/(?:href|src)="([^"]+)"/g)].map((m) => m[1].replaceAll('&amp;', '&'))
+    .filter((url) => !url.startsWith('data:')).map(decodeURIComponent);
+  for (const file of named)
+    if (!existsSync(join(root, file))) siteProblems.push(`index.html names ${file}, which is not in the site`);
+  const partPages = [...new Set(named.filter((f) => f.endsWith('.html')))];
+  const sample = Math.min(Number(options.sample), partPages.length);
+  for (let k = 0; k < sample; ++k) pages.push(partPages[Math.floor((k + 0.5) * partPages.length / sample)]);
+  console.log(`site: ${partPages.length} part pages in index.html, ${named.length} links and pictures checked`);
+}
 if (!pages.length) {
-  console.error('usage: node viewer_page_check.mjs [--width W] [--height H] [--timeout S] [--screenshots DIR] PAGE...');
+  console.error('usage: node viewer_page_check.mjs [--width W] [--height H] [--timeout S] [--screenshots DIR] PAGE...\n' +
+                '       node viewer_page_check.mjs --site DIR [--sample N] [...] [PAGE...]');
   process.exit(2);
 }
 if (options.screenshots) mkdirSync(options.screenshots, { recursive: true });
@@ -32,7 +67,7 @@ const browser = await chromium.launch({
   args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking',
          '--disable-component-update', '--disable-sync', '--no-first-run'],
 });
-let failures = 0;
+const slowest = { firstFrameMs: 0, subPixelMs: 0, longestFrameGap: 0 };
 for (const page of pages) {
   const name = basename(page);
   const context = await browser.newContext({ viewport: { width: Number(options.width), height: Number(options.height) },
@@ -41,15 +76,20 @@ for (const page of pages) {
   const problems = [];
   tab.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
   tab.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-  context.on('request', (r) => { if (!/^(file|data|blob):/.test(r.url())) problems.push(`request: ${r.url()}`); });
+  const allowed = origin ? (url) => url.startsWith(origin + '/') || /^(data|blob):/.test(url) : (url) => /^(file|data|blob):/.test(url);
+  context.on('request', (r) => { if (!allowed(r.url())) problems.push(`request: ${r.url()}`); });
+  context.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
   let state = null;
   try {
-    await tab.goto(pathToFileURL(resolve(page)).href);
+    const before = siteProblems.length;
+    await tab.goto(origin ? `${origin}/${page.split('/').map(encodeURIComponent).join('/')}` : pathToFileURL(resolve(page)).href);
     await tab.waitForFunction(() => window.cadnurbsViewer && (window.cadnurbsViewer.error || window.cadnurbsViewer.subPixelMs !== null),
                               null, { timeout: Number(options.timeout) * 1000 });
     state = await tab.evaluate(() => JSON.parse(JSON.stringify(window.cadnurbsViewer)));
     if (state.error) problems.push(`viewer: ${state.error}`);
     if (!(state.triangles > 0)) problems.push('no triangles drawn');
+    problems.push(...siteProblems.slice(before));
+    for (const key of Object.keys(slowest)) slowest[key] = Math.max(slowest[key], state[key]);
     if (options.screenshots) await tab.screenshot({ path: join(options.screenshots, `${name}.png`) });
   } catch (e) {
     problems.push(e.message.split('\n')[0]);
@@ -64,5 +104,10 @@ for (const page of pages) {
   console.log(`${name}\t${problems.length ? 'FAIL' : 'ok'}\t${figures}${problems.length ? '\t' + problems.join('; ') : ''}`);
 }
 await browser.close();
-console.log(`${pages.length - failures} of ${pages.length} pages drawn below one pixel`);
-process.exit(failures ? 1 : 0);
+if (server) server.close();
+for (const problem of siteProblems.filter((p) => !p.startsWith('not found'))) console.log(`site\tFAIL\t${problem}`);
+const siteFailed = siteProblems.some((p) => !p.startsWith('not found'));
+console.log(`${pages.length - failures} of ${pages.length} pages drawn below one pixel; slowest: first frame ` +
+            `${Math.round(slowest.firstFrameMs)} ms, sub-pixel ${Math.round(slowest.subPixelMs)} ms, longest frame gap ` +
+            `${Math.round(slowest.longestFrameGap)} ms`);
+process.exit(failures || siteFailed ? 1 : 0);

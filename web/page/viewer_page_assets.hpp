@@ -1,6 +1,7 @@
 #pragma once
-// What the viewer page inlines, embedded at build time (web/CMakeLists.txt, cmake/embed_assets.cmake):
-//   "page.html"              the page's template (web/viewer/page.html);
+// What the viewer pages inline or share, embedded at build time (web/CMakeLists.txt, cmake/embed_assets.cmake):
+//   "page.html"              the self-contained page's template (web/viewer/page.html);
+//   "site_page.html"         a site's part page's template (web/viewer/site_page.html);
 //   "viewer.js"              the viewer with three.js, bundled by esbuild;
 //   "mesh_worker.js"         the worker with the module's JavaScript, bundled by esbuild;
 //   "cadnurbs_wasm.base64"   the module's WebAssembly, as base64;

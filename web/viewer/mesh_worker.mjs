@@ -2,17 +2,27 @@
 // never waits for the tessellator. Messages in:
 //   (on starting)                                                      -> {type: 'started'}
 //   {type: 'open', wasm: ArrayBuffer, bytes: ArrayBuffer, name}      -> {type: 'opened', diagonal} or {type: 'error'}
+//   {type: 'open', wasmUrl, partUrl, name}                            -> the same, the two fetched here
 //   {type: 'mesh', id, deviation}                                      -> {type: 'mesh', id, ...arrays} or {type: 'error', id}
 // Positions go out as float32 (what WebGL draws), in the part's own coordinates.
 import { loadCadnurbs } from 'cadnurbs';
 
 let part = null;
 
-async function open({ wasm, bytes, name }) {
+async function fetched(url) {
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`${url}: ${response.status} ${response.statusText}`);
+  return response.arrayBuffer();
+}
+
+async function open({ wasm, bytes, wasmUrl, partUrl, name }) {
   const start = performance.now();
-  const cadnurbs = await loadCadnurbs({ wasmBinary: wasm, locateFile: (file) => file });
+  // From a URL the module compiles while it downloads (Emscripten's instantiateStreaming), the part
+  // downloading beside it.
+  const partBytes = partUrl ? fetched(partUrl) : Promise.resolve(bytes);
+  const cadnurbs = await loadCadnurbs(wasmUrl ? { locateFile: () => wasmUrl } : { wasmBinary: wasm, locateFile: (file) => file });
   const loaded = performance.now();
-  part = cadnurbs.read(new Uint8Array(bytes), name);
+  part = cadnurbs.read(new Uint8Array(await partBytes), name);
   return { type: 'opened', diagonal: part.diagonal, moduleMs: loaded - start, readMs: performance.now() - loaded };
 }
 

@@ -21,9 +21,11 @@ function formatLength(value) {
   return value >= 1 ? value.toPrecision(3) : value.toExponential(2);
 }
 
-// Starts the viewer in `container` on the part's bytes. `workerUrl`: the worker's script; `hud`: an element
-// for the status line.
-export async function startViewer({ container, hud, partBytes, wasmBytes, workerUrl, name }) {
+// Starts the viewer in `container`. The part and the module are either bytes (partBytes, wasmBytes: a page
+// that carries them) or URLs the worker fetches (partUrl, wasmUrl: a site's pages, which share one module
+// the browser compiles while it downloads). `workerUrl`: the worker's script; `hud`: an element for the
+// status line.
+export async function startViewer({ container, hud, partBytes, wasmBytes, partUrl, wasmUrl, workerUrl, name }) {
   const state = {
     name, started: performance.now(), error: '', frames: 0, longestFrameGap: 0, meshes: [],
     openedMs: null, firstFrameMs: null, subPixelMs: null, deviation: null, triangles: 0, refining: false,
@@ -33,9 +35,13 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, worker
   // WebGL's start holds for a while; then the worker compiles the module and reads the part meanwhile.
   const worker = new Worker(workerUrl);
   const running = new Promise((resolve) => { worker.onmessage = ({ data }) => data.type === 'started' && resolve(); });
-  const wasm = wasmBytes.buffer.slice(wasmBytes.byteOffset, wasmBytes.byteOffset + wasmBytes.byteLength);
-  const bytes = partBytes.buffer.slice(partBytes.byteOffset, partBytes.byteOffset + partBytes.byteLength);
-  worker.postMessage({ type: 'open', wasm, bytes, name }, [wasm, bytes]);
+  if (partUrl) {
+    worker.postMessage({ type: 'open', partUrl, wasmUrl, name });
+  } else {
+    const wasm = wasmBytes.buffer.slice(wasmBytes.byteOffset, wasmBytes.byteOffset + wasmBytes.byteLength);
+    const bytes = partBytes.buffer.slice(partBytes.byteOffset, partBytes.byteOffset + partBytes.byteLength);
+    worker.postMessage({ type: 'open', wasm, bytes, name }, [wasm, bytes]);
+  }
   await running;
   state.workerMs = performance.now() - state.started;
   const renderer = new THREE.WebGLRenderer({ antialias: true });
@@ -188,5 +194,16 @@ export function startEmbeddedViewer() {
     container: document.getElementById('cadnurbs-view'), hud: document.getElementById('cadnurbs-hud'),
     partBytes: base64Bytes(text('cadnurbs-part')), wasmBytes: base64Bytes(text('cadnurbs-wasm')), workerUrl,
     name: document.getElementById('cadnurbs-part').dataset.name,
+  });
+}
+
+// A page of a site (`batch --site`, site_page.html): the part's .cnb, the module and the worker's script are
+// files beside it, named by the cadnurbs-site element's data attributes (relative to the page).
+export function startSiteViewer() {
+  const site = document.getElementById('cadnurbs-site').dataset;
+  const url = (relative) => new URL(relative, document.baseURI).href;
+  return startViewer({
+    container: document.getElementById('cadnurbs-view'), hud: document.getElementById('cadnurbs-hud'),
+    partUrl: url(site.part), wasmUrl: url(site.wasm), workerUrl: url(site.worker), name: site.name,
   });
 }
