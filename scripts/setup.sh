@@ -15,7 +15,7 @@ esac
 
 debian_packages=(
   build-essential cmake pkg-config git
-  libeigen3-dev zlib1g-dev
+  libeigen3-dev zlib1g-dev libpng-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev
   libcgal-dev libopenmesh-dev libdraco-dev libmeshoptimizer-dev libtinygltf-dev nlohmann-json3-dev libtbb-dev
