@@ -13,6 +13,8 @@ import { existsSync, mkdirSync, readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { basename, join } from 'node:path';
 
+import { readNativeArrays } from './native_arrays.mjs';
+
 const [moduleDir, nativeTool, fractionText, outDir, ...files] = process.argv.slice(2);
 if (!files.length) {
   console.error('usage: node compare_with_native.mjs MODULE_DIR NATIVE_TOOL FRACTION OUT_DIR FILE...');
@@ -30,19 +32,6 @@ globalThis.__dirname = moduleDir;
 globalThis.require = createRequire(import.meta.url);
 const { loadCadnurbs } = await import(join(moduleDir, 'cadnurbs.mjs'));
 const cadnurbs = await loadCadnurbs({ wasmBinary: readFileSync(join(moduleDir, 'cadnurbs_wasm.wasm')) });
-
-function readNative(path) {
-  const b = readFileSync(path);
-  if (b.toString('latin1', 0, 4) !== 'CNSA') throw new Error(`${path}: not a native_scene_arrays dump`);
-  const vertices = b.readUInt32LE(4), triangles = b.readUInt32LE(8), faces = b.readUInt32LE(12);
-  let at = 16;
-  const doubles = (n) => { const a = new Float64Array(n); for (let i = 0; i < n; ++i, at += 8) a[i] = b.readDoubleLE(at); return a; };
-  const uints = (n) => { const a = new Uint32Array(n); for (let i = 0; i < n; ++i, at += 4) a[i] = b.readUInt32LE(at); return a; };
-  const floats = (n) => { const a = new Float32Array(n); for (let i = 0; i < n; ++i, at += 4) a[i] = b.readFloatLE(at); return a; };
-  const [diagonal, deviation, certifiedDeviation] = doubles(3);
-  return { diagonal, deviation, certifiedDeviation, positions: doubles(3 * vertices), indices: uints(3 * triangles),
-           faceFirstTriangle: uints(faces + 1), normals: floats(3 * vertices) };
-}
 
 function firstDifference(a, b) {
   if (a.length !== b.length) return `lengths ${a.length} and ${b.length}`;
@@ -65,7 +54,7 @@ for (const file of files) {
     const start = performance.now();
     execFileSync(nativeTool, [file, String(fraction), dump], { stdio: ['ignore', 'ignore', 'pipe'] });
     nativeMs = performance.now() - start;
-    native = readNative(dump);
+    native = readNativeArrays(dump);
   } catch (e) {
     nativeError = (e.stderr ? e.stderr.toString() : e.message).trim();
   }

@@ -4,24 +4,34 @@
 //
 //   node viewer_page_check.mjs [--width 1600] [--height 1200] [--timeout 60] [--screenshots DIR] PAGE...
 //   node viewer_page_check.mjs --site DIR [--sample N] [options as above] [PAGE...]
+//   node viewer_page_check.mjs --native TOOL --cnb DIR [options as above] PAGE...
 //
 // With --site, DIR (what `batch --site` wrote) is served over HTTP on 127.0.0.1 and PAGEs are paths under
 // it; --sample N adds N part pages spread evenly over the site's index. Requests may go to that server only,
 // and none may fail; every link and picture of index.html must name a file of the site.
 //
+// With --native, each page NAME.html's part DIR/NAME.cnb is also meshed by native code (TOOL,
+// native_scene_arrays) at the deviation the viewer ended at, and at an eighth of it (near the exact part);
+// in the viewer's final view both silhouettes, drawn without antialiasing, must lie within one pixel (in x
+// and y) of the viewer's own, pixel for pixel both ways.
+//
 // Prints a line per page: triangles, the final deviation, when the first frame and the sub-pixel mesh
 // came (milliseconds after the viewer started), and the longest gap between frames while refining; exit 1
 // when a page fails. Chromium: CHROMIUM, default /usr/bin/chromium; playwright-core from tests/viewers.
-import { existsSync, mkdirSync, readFileSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { createRequire } from 'node:module';
 import { basename, extname, join, normalize, resolve, sep } from 'node:path';
+import { tmpdir } from 'node:os';
 import { pathToFileURL } from 'node:url';
+
+import { readNativeArrays } from './native_arrays.mjs';
 
 const require = createRequire(join(import.meta.dirname ?? new URL('.', import.meta.url).pathname, '../viewers/package.json'));
 const { chromium } = require('playwright-core');
 
-const options = { width: 1600, height: 1200, timeout: 60, screenshots: '', site: '', sample: 0 };
+const options = { width: 1600, height: 1200, timeout: 60, screenshots: '', site: '', sample: 0, native: '', cnb: '' };
 const pages = [];
 for (let a = process.argv.slice(2), i = 0; i < a.length; ++i) {
   if (a[i].startsWith('--')) options[a[i].slice(2)] = a[++i];
@@ -68,6 +78,31 @@ const browser = await chromium.launch({
          '--disable-component-update', '--disable-sync', '--no-first-run'],
 });
 const slowest = { firstFrameMs: 0, subPixelMs: 0, longestFrameGap: 0 };
+const scratch = options.native ? mkdtempSync(join(tmpdir(), 'cadnurbs-silhouettes-')) : '';
+
+// The page's part meshed natively at the viewer's final deviation and at an eighth of it, each silhouette
+// held against the viewer's; a line of figures per mesh, problems added to `problems`.
+async function compareSilhouettes(tab, name, state, problems) {
+  const lines = [];
+  const cnb = join(options.cnb, name.replace(/\.html$/, '.cnb'));
+  for (const [label, divisor] of [['at its deviation', 1], ['at an eighth of it', 8]]) {
+    const dump = join(scratch, `${name}.${divisor}.native`);
+    execFileSync(options.native, [cnb, String(state.deviation / divisor / state.diagonal), dump], { stdio: ['ignore', 'ignore', 'pipe'] });
+    const native = readNativeArrays(dump);
+    const positions = Buffer.from(Float32Array.from(native.positions).buffer).toString('base64');
+    const indices = Buffer.from(native.indices.buffer).toString('base64');
+    const r = await tab.evaluate(({ positions, indices }) => {
+      const bytes = (text) => Uint8Array.from(atob(text), (c) => c.charCodeAt(0)).buffer;
+      return window.cadnurbsViewer.compareSilhouettes(new Float32Array(bytes(positions)), new Uint32Array(bytes(indices)));
+    }, { positions, indices });
+    const line = `${name}\tsilhouette ${label} (${native.indices.length / 3} triangles): viewer ${r.viewerPixels} px, ` +
+                 `native ${r.otherPixels} px, beyond one pixel ${r.viewerBeyond} and ${r.otherBeyond}`;
+    if (!(r.viewerPixels > 0) || r.viewerBeyond || r.otherBeyond) problems.push(`silhouettes ${label} differ: ${line}`);
+    lines.push(line);
+  }
+  return lines;
+}
+const silhouettes = [];
 for (const page of pages) {
   const name = basename(page);
   const context = await browser.newContext({ viewport: { width: Number(options.width), height: Number(options.height) },
@@ -90,6 +125,7 @@ for (const page of pages) {
     if (!(state.triangles > 0)) problems.push('no triangles drawn');
     problems.push(...siteProblems.slice(before));
     for (const key of Object.keys(slowest)) slowest[key] = Math.max(slowest[key], state[key]);
+    if (options.native && !state.error) silhouettes.push(...await compareSilhouettes(tab, name, state, problems));
     if (options.screenshots) await tab.screenshot({ path: join(options.screenshots, `${name}.png`) });
   } catch (e) {
     problems.push(e.message.split('\n')[0]);
@@ -105,6 +141,8 @@ for (const page of pages) {
 }
 await browser.close();
 if (server) server.close();
+for (const line of silhouettes) console.log(line);
+if (scratch) rmSync(scratch, { recursive: true, force: true });
 for (const problem of siteProblems.filter((p) => !p.startsWith('not found'))) console.log(`site\tFAIL\t${problem}`);
 const siteFailed = siteProblems.some((p) => !p.startsWith('not found'));
 console.log(`${pages.length - failures} of ${pages.length} pages drawn below one pixel; slowest: first frame ` +

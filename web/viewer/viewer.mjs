@@ -145,6 +145,7 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
     if (data.type === 'error') return fail(data.message);
     if (data.type === 'opened') {
       diagonal = data.diagonal;
+      state.diagonal = diagonal;
       state.openedMs = performance.now() - state.started;
       state.moduleMs = data.moduleMs;
       state.readMs = data.readMs;
@@ -167,6 +168,54 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
   controls.addEventListener('end', refine);
 
   controls.addEventListener('change', () => { dirty = true; });
+
+  // For tests: the silhouette of the mesh drawn now against that of another mesh of the part (positions in
+  // the part's coordinates, float32, and indices), both drawn in the current view without antialiasing.
+  // Returns the pixels each covers and how many of each lie more than one pixel (in x or y) from the other.
+  state.compareSilhouettes = (positions, indices) => {
+    const width = renderer.domElement.width, height = renderer.domElement.height;
+    const target = new THREE.WebGLRenderTarget(width, height);
+    const flat = new THREE.MeshBasicMaterial({ color: 0x000000, side: THREE.DoubleSide });
+    const mask = (mesh) => {
+      const alone = new THREE.Scene();
+      alone.background = new THREE.Color(1, 1, 1);
+      alone.add(mesh);
+      renderer.setRenderTarget(target);
+      renderer.render(alone, camera);
+      renderer.setRenderTarget(null);
+      const rgba = new Uint8Array(4 * width * height);
+      renderer.readRenderTargetPixels(target, 0, 0, width, height, rgba);
+      const covered = new Uint8Array(width * height);
+      for (let i = 0; i < covered.length; ++i) covered[i] = rgba[4 * i] < 128 ? 1 : 0;
+      return covered;
+    };
+    const other = new THREE.BufferGeometry();
+    other.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+    other.setIndex(new THREE.BufferAttribute(indices, 1));
+    const mine = mask(new THREE.Mesh(object.geometry, flat)), theirs = mask(new THREE.Mesh(other, flat));
+    other.dispose();
+    flat.dispose();
+    target.dispose();
+    const beyondOnePixel = (a, b) => {
+      let count = 0;
+      for (let y = 0; y < height; ++y)
+        for (let x = 0; x < width; ++x) {
+          if (!a[y * width + x] || b[y * width + x]) continue;
+          let near = false;
+          for (let dy = -1; dy <= 1 && !near; ++dy)
+            for (let dx = -1; dx <= 1 && !near; ++dx) {
+              const u = x + dx, v = y + dy;
+              near = u >= 0 && v >= 0 && u < width && v < height && b[v * width + u] === 1;
+            }
+          if (!near) ++count;
+        }
+      return count;
+    };
+    const count = (a) => a.reduce((sum, c) => sum + c, 0);
+    dirty = true;
+    return { width, height, viewerPixels: count(mine), otherPixels: count(theirs),
+             viewerBeyond: beyondOnePixel(mine, theirs), otherBeyond: beyondOnePixel(theirs, mine) };
+  };
   let last = performance.now();
   // Frame gaps count while refining after the first frame with the part (that one compiles the shaders).
   const frame = (now) => {
