@@ -201,7 +201,7 @@ class RecordingSource : public ByteSource {
   CnbPayload& record_;
 };
 
-Scene decode_scene(ByteSource& source, const OpenedPayload& payload, const std::string& name) {
+Scene decode_scene(ByteSource& source, const OpenedPayload& payload, const std::string& name, CnbFileFacts* facts = nullptr) {
   ByteReader in(source, payload.size);
   try {
     Scene scene;
@@ -216,14 +216,12 @@ Scene decode_scene(ByteSource& source, const OpenedPayload& payload, const std::
     scene.unit.millimetres = number("the unit's size");
     scene.source_unit.name = in.text();
     scene.source_unit.millimetres = number("the source unit's size");
-    number("the maximum deviation");
+    const double asked = number("the maximum deviation");
     const size_t q_at = in.offset();
     decoder.q = payload.version < 3 ? in.float64() : static_cast<double>(in.float32());
     if (!(decoder.q > 0) || !std::isfinite(decoder.q)) in.fail("the grid step is not positive and finite", q_at);
-    if (payload.version < 3)
-      decoder.finite_float("the deviation bound");
-    else
-      read_exact_number(in);
+    const double bound = payload.version < 3 ? decoder.finite_float("the deviation bound") : read_exact_number(in);
+    if (facts) *facts = {asked, bound};
     scene.root = decoder.node("", 0);
     if (in.left() > 0) in.fail(std::to_string(in.left()) + " bytes after the scene");
     return scene;
@@ -234,9 +232,9 @@ Scene decode_scene(ByteSource& source, const OpenedPayload& payload, const std::
 
 }  // namespace
 
-Scene read_cnb(const std::string& bytes, const std::string& name) {
+Scene read_cnb(const std::string& bytes, const std::string& name, CnbFileFacts* facts) {
   const OpenedPayload payload = open_payload(bytes, name);
-  return decode_scene(*payload.source, payload, name);
+  return decode_scene(*payload.source, payload, name, facts);
 }
 
 CnbPayload read_cnb_payload(const std::string& bytes, const std::string& name) {

@@ -11,8 +11,13 @@ namespace cadnurbs {
 // The scene from the file's bytes. Refuses damaged or truncated input with one FileError line,
 // "<name>: byte N: <reason>" for the file's header and checksum, "<name>: decoded byte N: <reason>" for
 // the payload behind them (N counted in the decoded payload), never allocating more than the remaining
-// bytes can hold. Every decoded shape is validated (an invalid one is refused the same way).
-Scene read_cnb(const std::string& bytes, const std::string& name);
+// bytes can hold. Every decoded shape is validated (an invalid one is refused the same way). `facts`, when
+// given, receives what the scene header says of the file's accuracy.
+struct CnbFileFacts {
+  double asked_deviation = 0;  // D, the deviation the writer was asked for (scene units)
+  double deviation_bound = 0;  // the bound it reached: every point of the file within it of the part written
+};
+Scene read_cnb(const std::string& bytes, const std::string& name, CnbFileFacts* facts = nullptr);
 
 // The decoded payload of a file as read_cnb parses it: each byte and the coder context it is read in
 // (docs/cnb.md, "The arithmetic coder"), for tools that study or train the coder

@@ -136,6 +136,7 @@ for (const page of pages) {
                           `part ${Math.round(state.readMs)})\t` +
                           `WebGL at ${Math.round(state.webglMs)} ms\tfirst frame ${Math.round(state.firstFrameMs)} ms\t` +
                           `sub-pixel ${Math.round(state.subPixelMs)} ms\tlongest frame gap ${Math.round(state.longestFrameGap)} ms\t` +
+                          `longest draw ${Math.round(state.longestDrawMs)} ms\t` +
                           `meshes ${state.meshes.length}` : '';
   console.log(`${name}\t${problems.length ? 'FAIL' : 'ok'}\t${figures}${problems.length ? '\t' + problems.join('; ') : ''}`);
 }

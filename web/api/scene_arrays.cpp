@@ -14,15 +14,20 @@ namespace {
 
 struct Reader {
   bool (*matches)(const std::string& bytes);
-  Scene (*read)(const std::string& bytes, const std::string& name);
+  PartFile (*read)(const std::string& bytes, const std::string& name);
 };
 
 bool cnb_magic(const std::string& bytes) { return bytes.compare(0, 4, "\x89" "CNB") == 0; }
 bool anything(const std::string&) { return true; }
-Scene read_vrml_bytes(const std::string& bytes, const std::string& name) { return parse_vrml(bytes, name); }
+PartFile read_cnb_bytes(const std::string& bytes, const std::string& name) {
+  CnbFileFacts facts;
+  Scene scene = read_cnb(bytes, name, &facts);
+  return {std::move(scene), facts.deviation_bound};
+}
+PartFile read_vrml_bytes(const std::string& bytes, const std::string& name) { return {parse_vrml(bytes, name), 0}; }
 
 // In order; the last takes what the others do not (parse_vrml names what it cannot read).
-constexpr Reader readers[] = {{cnb_magic, read_cnb}, {anything, read_vrml_bytes}};
+constexpr Reader readers[] = {{cnb_magic, read_cnb_bytes}, {anything, read_vrml_bytes}};
 
 // Appends one face's triangles, a vertex per position and distinct corner normal.
 void append_face(SceneArrays& out, const TriangleMesh& mesh, const Eigen::Affine3d& world, const Colour& colour) {
@@ -56,11 +61,13 @@ void append_face(SceneArrays& out, const TriangleMesh& mesh, const Eigen::Affine
 
 }  // namespace
 
-Scene read_scene_bytes(const std::string& bytes, const std::string& name) {
+PartFile read_part_bytes(const std::string& bytes, const std::string& name) {
   for (const Reader& reader : readers)
     if (reader.matches(bytes)) return reader.read(bytes, name);
-  throw std::logic_error("read_scene_bytes: no reader");  // the last reader takes anything
+  throw std::logic_error("read_part_bytes: no reader");  // the last reader takes anything
 }
+
+Scene read_scene_bytes(const std::string& bytes, const std::string& name) { return read_part_bytes(bytes, name).scene; }
 
 double scene_diagonal(const Scene& scene) {
   const Eigen::AlignedBox3d box = scene_bounding_box(scene);

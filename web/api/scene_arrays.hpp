@@ -14,6 +14,14 @@ namespace cadnurbs {
 // by content, as parse_vrml does). Throws FileError "<name>: ..." as read_cnb and parse_vrml do.
 Scene read_scene_bytes(const std::string& bytes, const std::string& name);
 
+// The same, with what the file says of its accuracy: a .cnb states the bound within which every point of it
+// lies from the part it was written from (its header's deviation bound); VRML and X3D state none (0).
+struct PartFile {
+  Scene scene;
+  double deviation_bound = 0;
+};
+PartFile read_part_bytes(const std::string& bytes, const std::string& name);
+
 // The diagonal of the scene's bounding box (control points and vertices, placed); 0 for an empty scene.
 // Deviations asked of certified_scene_arrays are fractions of it.
 double scene_diagonal(const Scene& scene);

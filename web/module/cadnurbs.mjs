@@ -16,6 +16,8 @@ class Part {
     this.wasm = wasm;
     this.scene = scene;
     this.diagonal = wasm._cn_scene_diagonal(scene);
+    // What the file states of its own deviation from the part it was written from (0: none stated).
+    this.fileDeviationBound = wasm._cn_scene_file_deviation_bound(scene);
   }
 
   // The certified mesh within `deviation` (the part's units): every point of it within `deviation` of the

@@ -9,7 +9,7 @@
 
 #include "web/api/scene_arrays.hpp"
 
-using cadnurbs::Scene;
+using cadnurbs::PartFile;
 using cadnurbs::SceneArrays;
 
 namespace {
@@ -38,20 +38,23 @@ auto guarded(char* error, size_t error_size, const char* doing, Make&& make) -> 
 extern "C" {
 
 // The part in `size` bytes at `bytes` (.cnb, VRML97 or X3D), `name` naming it in messages.
-EMSCRIPTEN_KEEPALIVE Scene* cn_read(const char* bytes, size_t size, const char* name, char* error, size_t error_size) {
+EMSCRIPTEN_KEEPALIVE PartFile* cn_read(const char* bytes, size_t size, const char* name, char* error, size_t error_size) {
   return guarded(error, error_size, "reading",
-                 [&] { return new Scene(cadnurbs::read_scene_bytes(std::string(bytes, size), name)); });
+                 [&] { return new PartFile(cadnurbs::read_part_bytes(std::string(bytes, size), name)); });
 }
 
-EMSCRIPTEN_KEEPALIVE void cn_scene_free(Scene* scene) { delete scene; }
+EMSCRIPTEN_KEEPALIVE void cn_scene_free(PartFile* part) { delete part; }
 
 // scene_diagonal (web/api/scene_arrays.hpp).
-EMSCRIPTEN_KEEPALIVE double cn_scene_diagonal(const Scene* scene) { return cadnurbs::scene_diagonal(*scene); }
+EMSCRIPTEN_KEEPALIVE double cn_scene_diagonal(const PartFile* part) { return cadnurbs::scene_diagonal(part->scene); }
 
-// The certified mesh of `scene` within `deviation` (the scene's units).
-EMSCRIPTEN_KEEPALIVE SceneArrays* cn_mesh(const Scene* scene, double deviation, char* error, size_t error_size) {
+// The bound the file states on its own deviation from the part it was written from (0: none stated).
+EMSCRIPTEN_KEEPALIVE double cn_scene_file_deviation_bound(const PartFile* part) { return part->deviation_bound; }
+
+// The certified mesh of the part's scene within `deviation` (the scene's units).
+EMSCRIPTEN_KEEPALIVE SceneArrays* cn_mesh(const PartFile* part, double deviation, char* error, size_t error_size) {
   return guarded(error, error_size, "meshing",
-                 [&] { return new SceneArrays(cadnurbs::certified_scene_arrays(*scene, deviation)); });
+                 [&] { return new SceneArrays(cadnurbs::certified_scene_arrays(part->scene, deviation)); });
 }
 
 EMSCRIPTEN_KEEPALIVE void cn_mesh_free(SceneArrays* mesh) { delete mesh; }

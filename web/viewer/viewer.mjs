@@ -28,7 +28,7 @@ function formatLength(value) {
 export async function startViewer({ container, hud, partBytes, wasmBytes, partUrl, wasmUrl, workerUrl, name }) {
   const state = {
     name, started: performance.now(), error: '', frames: 0, longestFrameGap: 0, meshes: [],
-    openedMs: null, firstFrameMs: null, subPixelMs: null, deviation: null, triangles: 0, refining: false,
+    openedMs: null, firstFrameMs: null, longestDrawMs: 0, subPixelMs: null, deviation: null, triangles: 0, refining: false,
   };
   window.cadnurbsViewer = state;
   // The worker first, and WebGL only once its script runs: starting a worker needs this thread, which
@@ -36,11 +36,11 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
   const worker = new Worker(workerUrl);
   const running = new Promise((resolve) => { worker.onmessage = ({ data }) => data.type === 'started' && resolve(); });
   if (partUrl) {
-    worker.postMessage({ type: 'open', partUrl, wasmUrl, name });
+    worker.postMessage({ type: 'open', partUrl, wasmUrl, name, firstMesh: coarseFraction });
   } else {
     const wasm = wasmBytes.buffer.slice(wasmBytes.byteOffset, wasmBytes.byteOffset + wasmBytes.byteLength);
     const bytes = partBytes.buffer.slice(partBytes.byteOffset, partBytes.byteOffset + partBytes.byteLength);
-    worker.postMessage({ type: 'open', wasm, bytes, name }, [wasm, bytes]);
+    worker.postMessage({ type: 'open', wasm, bytes, name, firstMesh: coarseFraction }, [wasm, bytes]);
   }
   await running;
   state.workerMs = performance.now() - state.started;
@@ -58,6 +58,18 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
   camera.add(light);
   const controls = new OrbitControls(camera, renderer.domElement);
   const material = new THREE.MeshStandardMaterial({ vertexColors: true, side: THREE.DoubleSide, roughness: 0.6, metalness: 0.1 });
+  // The shaders compiled now, while the worker reads and meshes the part, not at the first frame: a
+  // triangle with the part's attributes, drawn by the same material under the same lights.
+  {
+    const warm = new THREE.BufferGeometry();
+    for (const attribute of ['position', 'normal', 'color']) warm.setAttribute(attribute, new THREE.BufferAttribute(new Float32Array(9), 3));
+    warm.setIndex(new THREE.BufferAttribute(new Uint32Array([0, 1, 2]), 1));
+    const mesh = new THREE.Mesh(warm, material);
+    scene.add(mesh);
+    renderer.compile(scene, camera);
+    scene.remove(mesh);
+    warm.dispose();
+  }
   let object = null, diagonal = 0, sphere = null, pending = false, id = 0;
   // Drawn when something changed (a mesh, the camera, the size); the frame loop runs regardless, so that
   // its gaps show whether the page is free. Nothing to draw before the first mesh.
@@ -113,19 +125,18 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
     }
     status();
   };
-  const status = () => show(`${name} · ${state.triangles.toLocaleString()} triangles · within ${formatLength(state.deviation)}` +
-                            ` (certified ${formatLength(state.certified)}) · ${state.refining ? 'refining…' : 'below one pixel'}`);
+  // The meshing's figures are of the part the file holds; a .cnb also states how far that lies from the
+  // exact part it was written from, and the two add up.
+  const status = () => show(`${name} · ${state.triangles.toLocaleString()} triangles · meshed within ${formatLength(state.deviation)}` +
+                            ` of the file (certified ${formatLength(state.certified)})` +
+                            (state.fileDeviationBound > 0 ? ` · the file within ${formatLength(state.fileDeviationBound)} of the exact part` : '') +
+                            ` · ${state.refining ? 'refining…' : 'meshed below one pixel'}`);
 
   const place = (m) => {
     const geometry = new THREE.BufferGeometry();
     geometry.setAttribute('position', new THREE.BufferAttribute(m.positions, 3));
     geometry.setAttribute('normal', new THREE.BufferAttribute(m.normals, 3));
-    const colours = new Float32Array(m.positions.length);
-    const faces = m.faceColours.length / 3;
-    for (let f = 0; f < faces; ++f)
-      for (let t = m.faceFirstTriangle[f]; t < m.faceFirstTriangle[f + 1]; ++t)
-        for (let k = 0; k < 3; ++k) colours.set(m.faceColours.subarray(3 * f, 3 * f + 3), 3 * m.indices[3 * t + k]);
-    geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+    geometry.setAttribute('color', new THREE.BufferAttribute(m.colours, 3));
     geometry.setIndex(new THREE.BufferAttribute(m.indices, 1));
     geometry.computeBoundingSphere();
     if (object) {
@@ -146,11 +157,14 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
     if (data.type === 'opened') {
       diagonal = data.diagonal;
       state.diagonal = diagonal;
+      state.fileDeviationBound = data.fileDeviationBound;
       state.openedMs = performance.now() - state.started;
       state.moduleMs = data.moduleMs;
       state.readMs = data.readMs;
       if (!(diagonal > 0)) return fail('the part is empty');
-      return ask(coarseFraction * diagonal);
+      pending = true;  // the worker meshes at coarseFraction at once
+      state.refining = true;
+      return;
     }
     pending = false;
     place(data);
@@ -225,7 +239,10 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
     controls.update();
     if (dirty) {
       dirty = false;
+      const drawing = performance.now();
       renderer.render(scene, camera);
+      // What one draw costs the page's thread (the GPU's work, or a software renderer's), beside the gaps.
+      state.longestDrawMs = Math.max(state.longestDrawMs, performance.now() - drawing);
     }
     requestAnimationFrame(frame);
   };
