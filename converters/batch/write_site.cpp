@@ -56,10 +56,8 @@ SiteFiles site_files(const SiteOptions& options, const std::string& relative) {
           output_stem(options.out_dir, relative).string() + ".site-error"};
 }
 
-// In a worker: the part's .cnb copied into the site, its page, and its picture: the .cnb read back and meshed
-// as the page's viewer does (web/api), at site_thumbnail_deviation of its diagonal. A picture that cannot be
-// made leaves its reason in files.error and exit status 1; the page stands without it.
-int write_part_site(const SiteOptions& options, const std::string& relative, const std::string& library) {
+// The part's .cnb copied into the site and its page (each written only when it changed).
+void write_part_page(const SiteOptions& options, const std::string& relative, const std::string& library) {
   const SiteFiles files = site_files(options, relative);
   const std::string cnb = read_file(output_stem(options.out_dir, relative).string() + ".cnb");
   write_if_changed(files.cnb, cnb);
@@ -71,8 +69,15 @@ int write_part_site(const SiteOptions& options, const std::string& relative, con
   page.cnb_bytes = static_cast<long>(cnb.size());
   page.root = root_of(relative);
   write_if_changed(files.page, site_part_page(page));
+}
+
+// In a worker: the part's picture, its .cnb read back and meshed as the page's viewer does (web/api), at
+// site_thumbnail_deviation of its diagonal. A picture that cannot be made leaves its reason in files.error
+// and exit status 1; the page stands without it.
+int write_part_picture(const SiteOptions& options, const std::string& relative) {
+  const SiteFiles files = site_files(options, relative);
   try {
-    const Scene scene = read_scene_bytes(cnb, files.cnb.string());
+    const Scene scene = read_scene_bytes(read_file(files.cnb.string()), files.cnb.string());
     const SceneArrays mesh = certified_scene_arrays(scene, site_thumbnail_deviation * scene_diagonal(scene));
     write_if_changed(files.picture, indexed_png(part_thumbnail(mesh, site_thumbnail_width, site_thumbnail_height)));
     return 0;
@@ -84,11 +89,10 @@ int write_part_site(const SiteOptions& options, const std::string& relative, con
   }
 }
 
-// Whether the part's site files are there and its .cnb the batch's.
-bool up_to_date(const SiteFiles& files, const fs::path& batch_cnb) {
+// Whether the part's picture is there and was made of the batch's .cnb (the site's copy of it unchanged).
+bool picture_up_to_date(const SiteFiles& files, const fs::path& batch_cnb) {
   std::error_code error;
-  if (!fs::is_regular_file(files.page, error) || !fs::is_regular_file(files.picture, error) || !fs::is_regular_file(files.cnb, error))
-    return false;
+  if (!fs::is_regular_file(files.picture, error) || !fs::is_regular_file(files.cnb, error)) return false;
   return fs::file_size(files.cnb, error) == fs::file_size(batch_cnb, error) && read_file(files.cnb.string()) == read_file(batch_cnb.string());
 }
 
@@ -120,17 +124,19 @@ SiteSummary write_site(const SiteOptions& options, const std::vector<LibraryPart
                                   ? fs::path(options.in_dir).lexically_normal().parent_path().filename().string()
                                   : fs::path(options.in_dir).lexically_normal().filename().string();
 
-  std::vector<size_t> with_page, to_write;
+  // Pages are cheap and follow this cadnurbs' template: all written (when changed). Pictures cost a meshing:
+  // only those of new or changed parts.
+  std::vector<size_t> to_write;
   for (size_t i = 0; i < parts.size(); ++i) {
     if (records[i].failed) continue;
-    with_page.push_back(i);
     const SiteFiles files = site_files(options, parts[i].relative);
-    if (!up_to_date(files, output_stem(options.out_dir, parts[i].relative).string() + ".cnb")) to_write.push_back(i);
+    if (!picture_up_to_date(files, output_stem(options.out_dir, parts[i].relative).string() + ".cnb")) to_write.push_back(i);
+    write_part_page(options, parts[i].relative, library);
   }
   std::vector<std::string> picture_errors(parts.size());
   run_in_workers(
       static_cast<int>(to_write.size()), options.jobs, options.limits,
-      [&](int k) { return write_part_site(options, parts[to_write[k]].relative, library); },
+      [&](int k) { return write_part_picture(options, parts[to_write[k]].relative); },
       [&](int k, const WorkerOutcome& outcome) {
         const size_t i = to_write[k];
         const SiteFiles files = site_files(options, parts[i].relative);

@@ -27,9 +27,9 @@ constexpr int site_thumbnail_width = 160, site_thumbnail_height = 120;
 constexpr double site_thumbnail_deviation = 2e-3;  // of the part's diagonal: below a pixel of the picture
 
 // The site of `parts` (their records in the same order; a failed record gets a row saying why and no page).
-// A part whose .cnb, page and picture in the site are already up to date is not redone. The caller must
-// run one thread (pictures are made in forked workers). Throws FileError when SITE_DIR cannot be made or
-// written.
+// Every page is written (when its text changed); a picture only where the part is new or its .cnb changed.
+// The caller must run one thread (pictures are made in forked workers). Throws FileError when SITE_DIR
+// cannot be made or written.
 SiteSummary write_site(const SiteOptions& options, const std::vector<LibraryPart>& parts,
                        const std::vector<PartRecord>& records);
 
