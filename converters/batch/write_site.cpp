@@ -45,6 +45,13 @@ std::string root_of(const std::string& relative) {
   return root;
 }
 
+// The site's title: the library folder's name ("lib/" and "lib" alike).
+std::string library_title(const std::string& in_dir) {
+  fs::path folder = fs::path(in_dir).lexically_normal();
+  if (folder.filename().empty()) folder = folder.parent_path();
+  return folder.filename().string();
+}
+
 // What a part's site files are: its .cnb copy, page and picture, beside each other.
 struct SiteFiles {
   fs::path cnb, page, picture, error;  // error: beside the batch's outputs, the picture's failure when it failed
@@ -120,9 +127,7 @@ SiteSummary write_site(const SiteOptions& options, const std::vector<LibraryPart
     summary.totals.shared += static_cast<long>(bytes.size());
     summary.totals.gzip += static_cast<long>(gzip(bytes).size());
   }
-  const std::string library = fs::path(options.in_dir).lexically_normal().filename().empty()
-                                  ? fs::path(options.in_dir).lexically_normal().parent_path().filename().string()
-                                  : fs::path(options.in_dir).lexically_normal().filename().string();
+  const std::string library = library_title(options.in_dir);
 
   // Pages are cheap and follow this cadnurbs' template: all written (when changed). Pictures cost a meshing:
   // only those of new or changed parts.
