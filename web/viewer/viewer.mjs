@@ -44,10 +44,6 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
   }
   await running;
   state.workerMs = performance.now() - state.started;
-  const renderer = new THREE.WebGLRenderer({ antialias: true });
-  state.webglMs = performance.now() - state.started;
-  renderer.setPixelRatio(window.devicePixelRatio);
-  container.appendChild(renderer.domElement);
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(1, 1, 1);
   const camera = new THREE.PerspectiveCamera(35, 1, 1, 10);
@@ -56,20 +52,14 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
   const light = new THREE.DirectionalLight(0xffffff, 1.6);
   light.position.set(1, 1, 2);
   camera.add(light);
-  const controls = new OrbitControls(camera, renderer.domElement);
+  const controls = new OrbitControls(camera, container);
   const material = new THREE.MeshStandardMaterial({ vertexColors: true, side: THREE.DoubleSide, roughness: 0.6, metalness: 0.1 });
-  // The shaders compiled now, while the worker reads and meshes the part, not at the first frame: a
-  // triangle with the part's attributes, drawn by the same material under the same lights.
-  {
-    const warm = new THREE.BufferGeometry();
-    for (const attribute of ['position', 'normal', 'color']) warm.setAttribute(attribute, new THREE.BufferAttribute(new Float32Array(9), 3));
-    warm.setIndex(new THREE.BufferAttribute(new Uint32Array([0, 1, 2]), 1));
-    const mesh = new THREE.Mesh(warm, material);
-    scene.add(mesh);
-    renderer.compile(scene, camera);
-    scene.remove(mesh);
-    warm.dispose();
-  }
+  // The first, coarse mesh is sketched on a 2D canvas as soon as it comes (flat shades, far triangles
+  // first); WebGL, whose start holds this thread for a while, starts only then, and takes over.
+  const sketch = document.createElement('canvas');
+  sketch.style.cssText = 'position: absolute; left: 0; top: 0; width: 100%; height: 100%;';
+  container.appendChild(sketch);
+  let renderer = null;
   let object = null, diagonal = 0, sphere = null, pending = false, id = 0;
   // Drawn when something changed (a mesh, the camera, the size); the frame loop runs regardless, so that
   // its gaps show whether the page is free. Nothing to draw before the first mesh.
@@ -77,7 +67,9 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
 
   const resize = () => {
     const width = container.clientWidth || window.innerWidth, height = container.clientHeight || window.innerHeight;
-    renderer.setSize(width, height);
+    if (renderer) renderer.setSize(width, height);
+    sketch.width = Math.round(width * window.devicePixelRatio);
+    sketch.height = Math.round(height * window.devicePixelRatio);
     camera.aspect = width / height;
     camera.updateProjectionMatrix();
     dirty = object !== null;
@@ -92,7 +84,7 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
   const pixelDeviation = () => {
     const distance = camera.position.distanceTo(sphere.center) - sphere.radius;
     const nearest = Math.max(distance, camera.near);
-    const pixels = renderer.domElement.height;
+    const pixels = sketch.height;  // the drawing buffer's height, the sketch's and WebGL's alike
     const pixel = (2 * nearest * Math.tan(THREE.MathUtils.degToRad(camera.fov) / 2)) / pixels;
     return Math.max(pixel, finestFraction * diagonal);
   };
@@ -152,6 +144,57 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
     }
   };
 
+  // The coarse mesh on the 2D canvas: each triangle in its first vertex's colour, lit as the thumbnail
+  // pictures are (a light over the viewer's shoulder, both sides lit), drawn far to near.
+  const drawSketch = (m) => {
+    const context = sketch.getContext('2d', { willReadFrequently: true });  // drawn by the CPU: no GPU start before the first frame
+    const width = sketch.width, height = sketch.height;
+    context.fillStyle = '#fff';
+    context.fillRect(0, 0, width, height);
+    camera.updateMatrixWorld();
+    const vertices = m.positions.length / 3, screen = new Float32Array(3 * vertices), v = new THREE.Vector3();
+    for (let i = 0; i < vertices; ++i) {
+      v.fromArray(m.positions, 3 * i).project(camera);
+      screen.set([(v.x + 1) / 2 * width, (1 - v.y) / 2 * height, v.z], 3 * i);
+    }
+    const triangles = m.indices.length / 3, depth = new Float32Array(triangles);
+    for (let t = 0; t < triangles; ++t)
+      depth[t] = screen[3 * m.indices[3 * t] + 2] + screen[3 * m.indices[3 * t + 1] + 2] + screen[3 * m.indices[3 * t + 2] + 2];
+    const order = Array.from({ length: triangles }, (_, t) => t).sort((a, b) => depth[b] - depth[a]);
+    const toLight = new THREE.Vector3(1, 1, 2).normalize().transformDirection(camera.matrixWorld);
+    const a = new THREE.Vector3(), b = new THREE.Vector3(), c = new THREE.Vector3();
+    context.lineWidth = 1;
+    for (const t of order) {
+      const [i, j, k] = [m.indices[3 * t], m.indices[3 * t + 1], m.indices[3 * t + 2]];
+      a.fromArray(m.positions, 3 * i);
+      b.fromArray(m.positions, 3 * j).sub(a);
+      c.fromArray(m.positions, 3 * k).sub(a);
+      const normal = b.cross(c);
+      const length = normal.length();
+      const shade = 0.35 + 0.65 * (length > 0 ? Math.abs(normal.dot(toLight)) / length : 0);
+      const rgb = [0, 1, 2].map((q) => Math.round(255 * Math.min(1, m.colours[3 * i + q] * shade)));
+      context.fillStyle = context.strokeStyle = `rgb(${rgb[0]},${rgb[1]},${rgb[2]})`;
+      context.beginPath();
+      context.moveTo(screen[3 * i], screen[3 * i + 1]);
+      context.lineTo(screen[3 * j], screen[3 * j + 1]);
+      context.lineTo(screen[3 * k], screen[3 * k + 1]);
+      context.closePath();
+      context.fill();
+      context.stroke();  // no hairlines between neighbours
+    }
+  };
+
+  const startWebGL = () => {
+    renderer = new THREE.WebGLRenderer({ antialias: true });
+    state.webglMs = performance.now() - state.started;
+    renderer.setPixelRatio(window.devicePixelRatio);
+    renderer.domElement.style.cssText = 'position: absolute; left: 0; top: 0;';
+    container.appendChild(renderer.domElement);
+    resize();
+    renderer.compile(scene, camera);
+    dirty = true;
+  };
+
   worker.onmessage = ({ data }) => {
     if (data.type === 'error') return fail(data.message);
     if (data.type === 'opened') {
@@ -173,8 +216,10 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
     state.triangles = data.indices.length / 3;
     state.meshes.push({ deviation: data.deviation, triangles: state.triangles, milliseconds: data.milliseconds,
                         at: performance.now() - state.started });
+    if (!renderer) drawSketch(data);
     requestAnimationFrame(() => {
       if (state.firstFrameMs === null) state.firstFrameMs = performance.now() - state.started;
+      if (!renderer) startWebGL();
       refine();
     });
   };
@@ -237,12 +282,16 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
     last = now;
     ++state.frames;
     controls.update();
-    if (dirty) {
+    if (dirty && renderer) {
       dirty = false;
       const drawing = performance.now();
       renderer.render(scene, camera);
       // What one draw costs the page's thread (the GPU's work, or a software renderer's), beside the gaps.
       state.longestDrawMs = Math.max(state.longestDrawMs, performance.now() - drawing);
+      if (sketch.isConnected) {
+        sketch.remove();
+        state.firstWebGLFrameMs = performance.now() - state.started;
+      }
     }
     requestAnimationFrame(frame);
   };
