@@ -61,8 +61,9 @@ std::string site_index_html(const std::string& title, const std::vector<SiteInde
             grouped(totals.library_mesh) + " bytes (" + grouped(totals.library_mesh_gzip) + " gzip'd): the site is <b>" +
             ratio_text(static_cast<double>(site) / totals.library_mesh) + "</b> of them (" +
             ratio_text(static_cast<double>(totals.gzip) / totals.library_mesh_gzip) + " gzip'd against gzip'd).";
-  html += " Each page shows the exact part, meshed in your browser to below one pixel of the view; the pictures "
-          "here are the same meshes, drawn by cadnurbs.</p>\n";
+  html += " Each page shows the part as its .cnb holds it, meshed in your browser to below one pixel of the view, "
+          "and says how far the file lies from the exact part; the pictures here are drawn by cadnurbs from the "
+          "same meshes.</p>\n";
   html += "<h2>Families</h2>\n<table>\n<tr><th>family</th><th class=n>parts</th><th class=n>failed</th><th class=n>.cnb "
           "bytes</th><th class=n>library mesh bytes</th><th class=n>.cnb \u00f7 mesh</th></tr>\n";
   for (const auto& [name, f] : families)
