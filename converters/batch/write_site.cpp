@@ -18,12 +18,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A file of the site, written only when its bytes change (a second run leaves the site's dates alone).
-void write_if_changed(const fs::path& path, const std::string& bytes) {
+// A file of the site, written only when its bytes change (a second run leaves the site's dates alone);
+// whether it was written.
+bool write_if_changed(const fs::path& path, const std::string& bytes) {
   std::error_code error;
-  if (fs::is_regular_file(path, error) && fs::file_size(path, error) == bytes.size() && read_file(path.string()) == bytes) return;
+  if (fs::is_regular_file(path, error) && fs::file_size(path, error) == bytes.size() && read_file(path.string()) == bytes) return false;
   fs::create_directories(path.parent_path());
   write_file_atomically(path.string(), bytes);
+  return true;
 }
 
 SiteFileSize file_size_of(const std::string& label, const fs::path& path) {
@@ -63,17 +65,14 @@ SiteFiles site_files(const SiteOptions& options, const std::string& relative) {
           output_stem(options.out_dir, relative).string() + ".site-error"};
 }
 
-// The part's .cnb copied into the site and its page (each written only when it changed).
-void write_part_page(const SiteOptions& options, const std::string& relative, const std::string& library) {
-  const SiteFiles files = site_files(options, relative);
-  const std::string cnb = read_file(output_stem(options.out_dir, relative).string() + ".cnb");
-  write_if_changed(files.cnb, cnb);
+// The part's page (written only when it changed), beside its .cnb of `cnb_bytes` bytes.
+void write_part_page(const SiteFiles& files, const std::string& relative, const std::string& library, long cnb_bytes) {
   SitePartPage page;
   page.name = fs::path(relative).filename().string();
   page.family = family_of(relative);
   page.library = library;
   page.cnb_file = files.cnb.filename().string();
-  page.cnb_bytes = static_cast<long>(cnb.size());
+  page.cnb_bytes = cnb_bytes;
   page.root = root_of(relative);
   write_if_changed(files.page, site_part_page(page));
 }
@@ -94,13 +93,6 @@ int write_part_picture(const SiteOptions& options, const std::string& relative) 
     write_file_atomically(files.error.string(), error.what());
     return 1;
   }
-}
-
-// Whether the part's picture is there and was made of the batch's .cnb (the site's copy of it unchanged).
-bool picture_up_to_date(const SiteFiles& files, const fs::path& batch_cnb) {
-  std::error_code error;
-  if (!fs::is_regular_file(files.picture, error) || !fs::is_regular_file(files.cnb, error)) return false;
-  return fs::file_size(files.cnb, error) == fs::file_size(batch_cnb, error) && read_file(files.cnb.string()) == read_file(batch_cnb.string());
 }
 
 }  // namespace
@@ -130,13 +122,15 @@ SiteSummary write_site(const SiteOptions& options, const std::vector<LibraryPart
   const std::string library = library_title(options.in_dir);
 
   // Pages are cheap and follow this cadnurbs' template: all written (when changed). Pictures cost a meshing:
-  // only those of new or changed parts.
+  // only those of new parts or of a .cnb that changed (its copy in the site rewritten).
   std::vector<size_t> to_write;
   for (size_t i = 0; i < parts.size(); ++i) {
     if (records[i].failed) continue;
     const SiteFiles files = site_files(options, parts[i].relative);
-    if (!picture_up_to_date(files, output_stem(options.out_dir, parts[i].relative).string() + ".cnb")) to_write.push_back(i);
-    write_part_page(options, parts[i].relative, library);
+    const std::string cnb = read_file(output_stem(options.out_dir, parts[i].relative).string() + ".cnb");
+    std::error_code missing;
+    if (write_if_changed(files.cnb, cnb) || !fs::is_regular_file(files.picture, missing)) to_write.push_back(i);
+    write_part_page(files, parts[i].relative, library, static_cast<long>(cnb.size()));
   }
   std::vector<std::string> picture_errors(parts.size());
   run_in_workers(
