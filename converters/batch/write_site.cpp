@@ -65,7 +65,8 @@ SiteFiles site_files(const SiteOptions& options, const std::string& relative) {
           output_stem(options.out_dir, relative).string() + ".site-error"};
 }
 
-// The part's page (written only when it changed), beside its .cnb of `cnb_bytes` bytes.
+// The part's page (written only when it changed), beside its .cnb of `cnb_bytes` bytes and its picture,
+// which the page shows until the viewer draws, when there is one.
 void write_part_page(const SiteFiles& files, const std::string& relative, const std::string& library, long cnb_bytes) {
   SitePartPage page;
   page.name = fs::path(relative).filename().string();
@@ -73,6 +74,8 @@ void write_part_page(const SiteFiles& files, const std::string& relative, const 
   page.library = library;
   page.cnb_file = files.cnb.filename().string();
   page.cnb_bytes = cnb_bytes;
+  std::error_code missing;
+  if (fs::is_regular_file(files.picture, missing)) page.picture_file = files.picture.filename().string();
   page.root = root_of(relative);
   write_if_changed(files.page, site_part_page(page));
 }
@@ -121,16 +124,18 @@ SiteSummary write_site(const SiteOptions& options, const std::vector<LibraryPart
   }
   const std::string library = library_title(options.in_dir);
 
-  // Pages are cheap and follow this cadnurbs' template: all written (when changed). Pictures cost a meshing:
-  // only those of new parts or of a .cnb that changed (its copy in the site rewritten).
+  // Pictures cost a meshing: only those of new parts or of a .cnb that changed (its copy in the site
+  // rewritten). Pages are cheap and follow this cadnurbs' template: all written (when changed), after the
+  // pictures, which they show.
   std::vector<size_t> to_write;
+  std::vector<long> cnb_bytes(parts.size(), 0);
   for (size_t i = 0; i < parts.size(); ++i) {
     if (records[i].failed) continue;
     const SiteFiles files = site_files(options, parts[i].relative);
     const std::string cnb = read_file(output_stem(options.out_dir, parts[i].relative).string() + ".cnb");
+    cnb_bytes[i] = static_cast<long>(cnb.size());
     std::error_code missing;
     if (write_if_changed(files.cnb, cnb) || !fs::is_regular_file(files.picture, missing)) to_write.push_back(i);
-    write_part_page(files, parts[i].relative, library, static_cast<long>(cnb.size()));
   }
   std::vector<std::string> picture_errors(parts.size());
   run_in_workers(
@@ -150,6 +155,8 @@ SiteSummary write_site(const SiteOptions& options, const std::vector<LibraryPart
           std::cerr << "batch: site: " << parts[i].relative << ": " << picture_errors[i] << "\n";
         }
       });
+  for (size_t i = 0; i < parts.size(); ++i)
+    if (!records[i].failed) write_part_page(site_files(options, parts[i].relative), parts[i].relative, library, cnb_bytes[i]);
 
   std::vector<SiteIndexEntry> entries;
   for (size_t i = 0; i < parts.size(); ++i) {

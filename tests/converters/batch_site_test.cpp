@@ -81,11 +81,14 @@ TEST_F(BatchSite, PagesPicturesAndAnIndexWhoseSizesAreTheFilesWritten) {
   const std::string index = read_file(path("site/index.html"));
   for (const std::string part : {"cappings/capping-90.step", "cappings/capping-end.step", "other/screw.step"}) {
     SCOPED_TRACE(part);
-    // The page names the .cnb beside it and the shared files one folder up; the .cnb is the batch's.
+    // The page names the .cnb and the picture beside it and the shared files one folder up; the .cnb is
+    // the batch's.
     const std::string page = read_file(path("site/" + part + ".html"));
     const std::string cnb_name = fs::path(part).filename().string() + ".cnb";
     EXPECT_NE(page.find("data-part=\"" + cnb_name + "\""), std::string::npos);
-    EXPECT_NE(page.find("<script src=\"../cadnurbs-assets/viewer.js\">"), std::string::npos);
+    EXPECT_NE(page.find("src=\"" + fs::path(part).filename().string() + ".png\""), std::string::npos);
+    EXPECT_NE(page.find("<script src=\"../cadnurbs-assets/site_start.js\">"), std::string::npos);
+    EXPECT_NE(page.find("<script defer src=\"../cadnurbs-assets/viewer.js\">"), std::string::npos);
     EXPECT_EQ(read_file(path("site/" + part + ".cnb")), read_file(path("out/" + part + ".cnb")));
     EXPECT_EQ(png_size(read_file(path("site/" + part + ".png"))), std::make_pair(160, 120));
     EXPECT_NE(index.find("<a href=\"" + part + ".html\">" + part + "</a>"), std::string::npos);
@@ -93,7 +96,7 @@ TEST_F(BatchSite, PagesPicturesAndAnIndexWhoseSizesAreTheFilesWritten) {
   }
   EXPECT_FALSE(fs::exists(path("site/other/broken.step.html")));
   EXPECT_NE(index.find("other/broken.step<br><span class=failed>"), std::string::npos);
-  for (const char* shared : {"viewer.js", "mesh_worker.js", "cadnurbs_wasm.wasm", "LICENSES.txt"})
+  for (const char* shared : {"site_start.js", "viewer.js", "render_worker.js", "mesh_worker.js", "cadnurbs_wasm.wasm", "LICENSES.txt"})
     EXPECT_TRUE(fs::is_regular_file(path(std::string("site/cadnurbs-assets/") + shared))) << shared;
   EXPECT_EQ(read_file(path("site/cadnurbs-assets/cadnurbs_wasm.wasm")).substr(0, 4), std::string("\0asm", 4));
 

@@ -1,6 +1,6 @@
 // The pieces of a site (`batch --site`, issue 40): a part's picture against the view's closed form (a cube
 // inside the circle its bounding sphere fills, covering the share of it its projection covers), PNG bytes
-// read back by libpng, base64 both ways, and URL paths.
+// read back by libpng, base64 both ways, URL paths, and a part's page with and without its picture.
 #include <gtest/gtest.h>
 #include <png.h>
 
@@ -10,6 +10,7 @@
 #include "formats/png/indexed_png.hpp"
 #include "formats/web_text/base64.hpp"
 #include "formats/web_text/markup_text.hpp"
+#include "web/page/site_page.hpp"
 #include "web/thumbnail/part_thumbnail.hpp"
 
 namespace cadnurbs {
@@ -123,6 +124,30 @@ TEST(UrlPath, KeepsFoldersAndEncodesWhatAUrlReadsOtherwise) {
   EXPECT_EQ(url_path("Package_QFP.3dshapes/LQFP-48_7x7mm.step.html"), "Package_QFP.3dshapes/LQFP-48_7x7mm.step.html");
   EXPECT_EQ(url_path("a b/c#1?.step,x"), "a%20b/c%231%3F.step%2Cx");
   EXPECT_EQ(url_path("\xc3\xa9"), "%C3%A9");
+}
+
+TEST(SitePartPage, ShowsThePictureWhenThereIsOneAndNamesTheSharedFiles) {
+  SitePartPage page;
+  page.name = "a b.step";
+  page.family = "f";
+  page.library = "L";
+  page.cnb_file = "a b.step.cnb";
+  page.cnb_bytes = 1234;
+  page.root = "../";
+  std::string without;
+  try {
+    without = site_part_page(page);
+  } catch (const std::runtime_error&) {
+    GTEST_SKIP() << "built without the browser module";
+  }
+  EXPECT_EQ(without.find("<img"), std::string::npos);
+  EXPECT_NE(without.find("data-part=\"a%20b.step.cnb\""), std::string::npos);
+  EXPECT_NE(without.find("data-renderer=\"../cadnurbs-assets/render_worker.js\""), std::string::npos);
+  EXPECT_NE(without.find("<script src=\"../cadnurbs-assets/site_start.js\">"), std::string::npos);
+  page.picture_file = "a b.step.png";
+  const std::string with = site_part_page(page);
+  EXPECT_NE(with.find("<div id=\"cadnurbs-view\"><img id=\"cadnurbs-picture\" elementtiming=\"picture\" src=\"a%20b.step.png\" alt=\"\"></div>"),
+            std::string::npos);
 }
 
 }  // namespace

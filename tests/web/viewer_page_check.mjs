@@ -15,9 +15,11 @@
 // in the viewer's final view both silhouettes, drawn without antialiasing, must lie within one pixel (in x
 // and y) of the viewer's own, pixel for pixel both ways.
 //
-// Prints a line per page: triangles, the final deviation, when the first frame and the sub-pixel mesh
-// came (milliseconds after the viewer started), and the longest gap between frames while refining; exit 1
-// when a page fails. Chromium: CHROMIUM, default /usr/bin/chromium; playwright-core from tests/viewers.
+// Prints a line per page: triangles, the final deviation, when the first frame showed the part (a site
+// page's picture, as the browser reports its paint, or the sketch of the first mesh) and when WebGL drew
+// its first frame and the sub-pixel mesh (milliseconds since the page's navigation started), the longest
+// gap between the page's frames and between the renderer's (its worker's) while refining; exit 1 when a
+// page fails. Chromium: CHROMIUM, default /usr/bin/chromium; playwright-core from tests/viewers.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { createServer } from 'node:http';
@@ -77,7 +79,7 @@ const browser = await chromium.launch({
   args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking',
          '--disable-component-update', '--disable-sync', '--no-first-run'],
 });
-const slowest = { firstFrameMs: 0, subPixelMs: 0, longestFrameGap: 0 };
+const slowest = { firstFrameMs: 0, firstWebGLFrameMs: 0, subPixelMs: 0, longestFrameGap: 0, longestRenderGap: 0 };
 const scratch = options.native ? mkdtempSync(join(tmpdir(), 'cadnurbs-silhouettes-')) : '';
 
 // The page's part meshed natively at the viewer's final deviation and at an eighth of it, each silhouette
@@ -132,11 +134,12 @@ for (const page of pages) {
   }
   await context.close();
   if (problems.length) ++failures;
-  const figures = state ? `triangles ${state.triangles}\tdeviation ${state.deviation}\tworker ${Math.round(state.workerMs)} ms\tread ${Math.round(state.openedMs)} ms (module ${Math.round(state.moduleMs)}, ` +
-                          `part ${Math.round(state.readMs)})\t` +
-                          `WebGL at ${Math.round(state.webglMs)} ms\tfirst frame ${Math.round(state.firstFrameMs)} ms\t` +
-                          `sub-pixel ${Math.round(state.subPixelMs)} ms\tlongest frame gap ${Math.round(state.longestFrameGap)} ms\t` +
-                          `longest draw ${Math.round(state.longestDrawMs)} ms\t` +
+  const ms = (value) => (value === null || value === undefined ? '-' : `${Math.round(value)} ms`);
+  const figures = state ? `triangles ${state.triangles}\tdeviation ${state.deviation}\tread ${ms(state.openedMs)} (module ${ms(state.moduleMs)}, ` +
+                          `part ${ms(state.readMs)})\tpicture ${ms(state.pictureMs)}\tsketch ${ms(state.sketchMs)}\t` +
+                          `first frame ${ms(state.firstFrameMs)}\tWebGL started ${ms(state.webglMs)}, first frame ${ms(state.firstWebGLFrameMs)}\t` +
+                          `sub-pixel ${ms(state.subPixelMs)}\tlongest frame gap ${ms(state.longestFrameGap)}\t` +
+                          `renderer's ${ms(state.longestRenderGap)}\tlongest draw ${ms(state.longestDrawMs)}\t` +
                           `meshes ${state.meshes.length}` : '';
   console.log(`${name}\t${problems.length ? 'FAIL' : 'ok'}\t${figures}${problems.length ? '\t' + problems.join('; ') : ''}`);
 }
@@ -147,6 +150,7 @@ if (scratch) rmSync(scratch, { recursive: true, force: true });
 for (const problem of siteProblems.filter((p) => !p.startsWith('not found'))) console.log(`site\tFAIL\t${problem}`);
 const siteFailed = siteProblems.some((p) => !p.startsWith('not found'));
 console.log(`${pages.length - failures} of ${pages.length} pages drawn below one pixel; slowest: first frame ` +
-            `${Math.round(slowest.firstFrameMs)} ms, sub-pixel ${Math.round(slowest.subPixelMs)} ms, longest frame gap ` +
-            `${Math.round(slowest.longestFrameGap)} ms`);
+            `${Math.round(slowest.firstFrameMs)} ms, WebGL's first ${Math.round(slowest.firstWebGLFrameMs)} ms, sub-pixel ` +
+            `${Math.round(slowest.subPixelMs)} ms, longest frame gap ${Math.round(slowest.longestFrameGap)} ms (the renderer's ` +
+            `${Math.round(slowest.longestRenderGap)} ms)`);
 process.exit(failures || siteFailed ? 1 : 0);

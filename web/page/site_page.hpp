@@ -14,6 +14,7 @@ struct SitePartPage {
   std::string family;     // its folder in the library
   std::string library;    // the site's title, the index's link text
   std::string cnb_file;   // the part's .cnb, relative to the page
+  std::string picture_file;  // its picture, relative to the page, shown until the viewer draws; "" for none
   long cnb_bytes = 0;     // its size, said beside the download link
   std::string root;       // the site's top folder, relative to the page ("", "../", ...)
 };
@@ -24,8 +25,8 @@ inline const char* site_assets_folder() { return "cadnurbs-assets"; }
 // The page. Throws std::runtime_error when this cadnurbs was built without the browser module.
 std::string site_part_page(const SitePartPage& page);
 
-// The shared files, as (name, bytes): viewer.js, mesh_worker.js, cadnurbs_wasm.wasm and LICENSES.txt (the
-// bundled packages' versions and licences). Throws as site_part_page.
+// The shared files, as (name, bytes): site_start.js, viewer.js, render_worker.js, mesh_worker.js,
+// cadnurbs_wasm.wasm and LICENSES.txt (the bundled packages' versions and licences). Throws as site_part_page.
 std::vector<std::pair<std::string, std::string>> site_assets();
 
 }  // namespace cadnurbs

@@ -1,6 +1,5 @@
 // The viewer's worker: holds the part in the WebAssembly module and meshes it on request, so that the page
 // never waits for the tessellator. Messages in:
-//   (on starting)                                                      -> {type: 'started'}
 //   {type: 'open', wasm: ArrayBuffer, bytes: ArrayBuffer, name}      -> {type: 'opened', diagonal, fileDeviationBound} or {type: 'error'}
 //   {type: 'open', wasmUrl, partUrl, name}                            -> the same, the two fetched here
 //   (either open with firstMesh: F)                                    -> then {type: 'mesh', id: 0, ...} at F x diagonal
@@ -54,15 +53,13 @@ function post(reply) {
   self.postMessage(reply, transfer);
 }
 
-self.postMessage({ type: 'started' });  // the viewer waits for this before it starts WebGL
 self.onmessage = async (event) => {
   const request = event.data;
   try {
     if (request.type !== 'open') return post(mesh(request));
     const opened = await open(request);
     post(opened);
-    // The first mesh at once, at `firstMesh` of the diagonal, without waiting for the page to ask: its
-    // thread is busy starting WebGL meanwhile.
+    // The first mesh at once, at `firstMesh` of the diagonal, without waiting for the page to ask.
     if (request.firstMesh > 0) post(mesh({ id: 0, deviation: request.firstMesh * opened.diagonal }));
   } catch (e) {
     self.postMessage({ type: 'error', id: request.id, message: e.message || String(e) });

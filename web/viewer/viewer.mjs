@@ -2,11 +2,18 @@
 // WebAssembly module, coarse at once, then finer until every point is within one pixel of the exact part
 // in the current view (the deviation is the world size of a pixel at the part's nearest point); orbit,
 // fit to view, the faces' colours, and on screen the triangle count and the deviation the mesh is
-// certified within. window.cadnurbsViewer says what the viewer did, for tests and for the curious.
-import * as THREE from 'three';
+// certified within. The page's thread keeps the camera, the controls and the status line; WebGL runs in a
+// second worker (render_worker.mjs) on an OffscreenCanvas, so that its start and its draws never hold the
+// page. Until WebGL's first frame the page shows its picture of the part (a site's page), or else the first
+// mesh sketched on a 2D canvas (sketch.mjs).
+// window.cadnurbsViewer says what the viewer did, for tests and for the curious; its times are
+// milliseconds since the page's navigation started.
+import { MathUtils, PerspectiveCamera, Vector3 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 
-const coarseFraction = 1e-2;     // of the diagonal: the first mesh, at once
+import { sitePagePart, startMeshWorker } from './mesh_worker_start.mjs';
+import { drawSketch } from './sketch.mjs';
+
 const finestFraction = 1e-5;     // of the diagonal: no finer, however close the camera comes
 const refineRatio = 1.5;         // a new mesh only when the wanted deviation is this much finer
 
@@ -17,88 +24,142 @@ function base64Bytes(text) {
   return bytes;
 }
 
+// 12345 as "12,345"; toLocaleString's first call loads the locale's data, which holds the page for tens of
+// milliseconds.
+function grouped(count) {
+  return String(count).replace(/\B(?=(\d{3})+(?!\d))/g, ',');
+}
+
 function formatLength(value) {
   return value >= 1 ? value.toPrecision(3) : value.toExponential(2);
 }
 
-// Starts the viewer in `container`. The part and the module are either bytes (partBytes, wasmBytes: a page
-// that carries them) or URLs the worker fetches (partUrl, wasmUrl: a site's pages, which share one module
-// the browser compiles while it downloads). `workerUrl`: the worker's script; `hud`: an element for the
-// status line.
-export async function startViewer({ container, hud, partBytes, wasmBytes, partUrl, wasmUrl, workerUrl, name }) {
+// Starts the viewer in `container`. `meshWorker`: the mesh worker startMeshWorker started on the part, which
+// a page may start before this script loads; otherwise `part` says what to start it on (startMeshWorker's
+// options). `rendererUrl`: the renderer's script; `hud`: an element for the status line; `picture`: an
+// element shown until the first mesh is drawn (a site page's picture of the part), or null. Refuses a
+// browser that cannot draw WebGL in a worker.
+export function startViewer({ container, hud, picture = null, meshWorker = null, part = {}, rendererUrl, name }) {
   const state = {
-    name, started: performance.now(), error: '', frames: 0, longestFrameGap: 0, meshes: [],
-    openedMs: null, firstFrameMs: null, longestDrawMs: 0, subPixelMs: null, deviation: null, triangles: 0, refining: false,
+    name, viewerStartedMs: performance.now(), error: '', frames: 0, longestFrameGap: 0, longestRenderGap: 0, meshes: [],
+    openedMs: null, webglMs: null, pictureMs: null, sketchMs: null, firstFrameMs: null, firstWebGLFrameMs: null, longestDrawMs: 0, subPixelMs: null,
+    deviation: null, certified: null, triangles: 0, refining: false,
   };
   window.cadnurbsViewer = state;
-  // The worker first, and WebGL only once its script runs: starting a worker needs this thread, which
-  // WebGL's start holds for a while; then the worker compiles the module and reads the part meanwhile.
-  const worker = new Worker(workerUrl);
-  const running = new Promise((resolve) => { worker.onmessage = ({ data }) => data.type === 'started' && resolve(); });
-  if (partUrl) {
-    worker.postMessage({ type: 'open', partUrl, wasmUrl, name, firstMesh: coarseFraction });
-  } else {
-    const wasm = wasmBytes.buffer.slice(wasmBytes.byteOffset, wasmBytes.byteOffset + wasmBytes.byteLength);
-    const bytes = partBytes.buffer.slice(partBytes.byteOffset, partBytes.byteOffset + partBytes.byteLength);
-    worker.postMessage({ type: 'open', wasm, bytes, name, firstMesh: coarseFraction }, [wasm, bytes]);
+  const show = (text) => { if (hud) hud.textContent = text; };
+  const fail = (message) => { state.error = message; show(`${name}: ${message}`); };
+  if (typeof OffscreenCanvas === 'undefined' || !HTMLCanvasElement.prototype.transferControlToOffscreen) {
+    fail('this browser cannot draw WebGL in a worker (OffscreenCanvas)');
+    return state;
   }
-  await running;
-  state.workerMs = performance.now() - state.started;
-  const scene = new THREE.Scene();
-  scene.background = new THREE.Color(1, 1, 1);
-  const camera = new THREE.PerspectiveCamera(35, 1, 1, 10);
-  scene.add(camera);
-  scene.add(new THREE.HemisphereLight(0xffffff, 0x666666, 1.6));
-  const light = new THREE.DirectionalLight(0xffffff, 1.6);
-  light.position.set(1, 1, 2);
-  camera.add(light);
-  const controls = new OrbitControls(camera, container);
-  const material = new THREE.MeshStandardMaterial({ vertexColors: true, side: THREE.DoubleSide, roughness: 0.6, metalness: 0.1 });
-  // The first, coarse mesh is sketched on a 2D canvas as soon as it comes (flat shades, far triangles
-  // first); WebGL, whose start holds this thread for a while, starts only then, and takes over.
-  const sketch = document.createElement('canvas');
-  sketch.style.cssText = 'position: absolute; left: 0; top: 0; width: 100%; height: 100%;';
-  container.appendChild(sketch);
+  const { worker, said } = meshWorker ?? startMeshWorker({ ...part, name });
+  const layer = () => {
+    const canvas = document.createElement('canvas');
+    canvas.style.cssText = 'position: absolute; left: 0; top: 0; width: 100%; height: 100%;';
+    container.appendChild(canvas);
+    return canvas;
+  };
+  const size = () => ({ width: container.clientWidth || window.innerWidth, height: container.clientHeight || window.innerHeight });
+  // WebGL's start (its script parsed, its shaders compiled by a software GPU where there is no other)
+  // would delay the first frame on a machine of few cores: the renderer starts once the picture or the
+  // sketch is shown.
+  const glCanvas = layer();
   let renderer = null;
-  let object = null, diagonal = 0, sphere = null, pending = false, id = 0;
-  // Drawn when something changed (a mesh, the camera, the size); the frame loop runs regardless, so that
-  // its gaps show whether the page is free. Nothing to draw before the first mesh.
-  let dirty = false;
+  const toRenderer = [];  // what the renderer is told before it starts
+  const tell = (message, transfer = []) => (renderer ? renderer.postMessage(message, transfer) : toRenderer.push([message, transfer]));
+  const startRenderer = () => {
+    if (renderer) return;
+    renderer = new Worker(rendererUrl);
+    renderer.onmessage = ({ data }) => fromRenderer[data.type](data);
+    renderer.onerror = (event) => fail(event.message || 'the renderer failed');
+    const canvas = glCanvas.transferControlToOffscreen();
+    renderer.postMessage({ type: 'start', canvas, ...size(), pixelRatio: window.devicePixelRatio }, [canvas]);
+    for (const [message, transfer] of toRenderer.splice(0)) renderer.postMessage(message, transfer);
+  };
+  const sketch = picture ? null : layer();  // above WebGL's canvas until WebGL draws
+  // The renderer starts when the picture has been painted: when the browser says so (Element Timing), or
+  // else two frames after it loaded; at once when it cannot load.
+  if (picture) {
+    const afterTwoFrames = () => requestAnimationFrame(() => requestAnimationFrame(startRenderer));
+    if (PerformanceObserver.supportedEntryTypes?.includes('element')) {
+      new PerformanceObserver((list, observer) => {
+        const painted = list.getEntries().find((entry) => entry.identifier === picture.getAttribute('elementtiming'));
+        if (!painted) return;
+        observer.disconnect();
+        if (painted.renderTime > 0) {
+          state.pictureMs = painted.renderTime;
+          if (state.firstFrameMs === null || state.pictureMs < state.firstFrameMs) state.firstFrameMs = state.pictureMs;
+          updateCounting();
+        }
+        startRenderer();
+      }).observe({ type: 'element', buffered: true });
+    } else if (picture.complete) {
+      afterTwoFrames();
+    } else {
+      picture.addEventListener('load', afterTwoFrames);
+    }
+    picture.addEventListener('error', startRenderer);
+  }
+
+  const camera = new PerspectiveCamera(35, 1, 1, 10);
+  const controls = new OrbitControls(camera, container);
+  let diagonal = 0, center = null, radius = 0, pixels = 1, pending = false, id = 0, meshId = -1, subPixelMeshId = null;
+  let viewChanged = false, silhouettesReply = null;
+  const sendView = () => tell({
+    type: 'view', position: camera.position.toArray(), quaternion: camera.quaternion.toArray(),
+    fov: camera.fov, aspect: camera.aspect, near: camera.near, far: camera.far,
+  });
+  // Frame gaps count from the first frame until the sub-pixel mesh is drawn, and whenever refining after.
+  const counting = () => state.firstFrameMs !== null && (state.refining || state.subPixelMs === null);
+  let countingGaps = false;
+  const updateCounting = () => {
+    if (counting() !== countingGaps) tell({ type: 'refining', value: (countingGaps = counting()) });
+  };
 
   const resize = () => {
-    const width = container.clientWidth || window.innerWidth, height = container.clientHeight || window.innerHeight;
-    if (renderer) renderer.setSize(width, height);
-    sketch.width = Math.round(width * window.devicePixelRatio);
-    sketch.height = Math.round(height * window.devicePixelRatio);
+    const { width, height } = size();
+    pixels = Math.floor(height * window.devicePixelRatio);  // WebGL's drawing buffer's height, as three.js sizes it
+    if (sketch) [sketch.width, sketch.height] = [Math.round(width * window.devicePixelRatio), pixels];
     camera.aspect = width / height;
     camera.updateProjectionMatrix();
-    dirty = object !== null;
+    tell({ type: 'size', width, height });
+    viewChanged = true;
   };
   window.addEventListener('resize', resize);
   resize();
 
-  const show = (text) => { if (hud) hud.textContent = text; };
-  const fail = (message) => { state.error = message; show(`${name}: ${message}`); };
-
   // The deviation one pixel of the view allows at the part's nearest point.
   const pixelDeviation = () => {
-    const distance = camera.position.distanceTo(sphere.center) - sphere.radius;
-    const nearest = Math.max(distance, camera.near);
-    const pixels = sketch.height;  // the drawing buffer's height, the sketch's and WebGL's alike
-    const pixel = (2 * nearest * Math.tan(THREE.MathUtils.degToRad(camera.fov) / 2)) / pixels;
+    const nearest = Math.max(camera.position.distanceTo(center) - radius, camera.near);
+    const pixel = (2 * nearest * Math.tan(MathUtils.degToRad(camera.fov) / 2)) / pixels;
     return Math.max(pixel, finestFraction * diagonal);
   };
 
+  // The bounding sphere as three.js makes it (the box's centre, the farthest point), of the first mesh.
+  const bound = (positions) => {
+    const low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
+    for (let i = 0; i < positions.length; ++i) {
+      low[i % 3] = Math.min(low[i % 3], positions[i]);
+      high[i % 3] = Math.max(high[i % 3], positions[i]);
+    }
+    center = new Vector3((low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2);
+    const p = new Vector3();
+    for (let i = 0; i < positions.length; i += 3) radius = Math.max(radius, center.distanceToSquared(p.fromArray(positions, i)));
+    radius = Math.sqrt(radius);
+  };
+
   const fit = () => {
-    const distance = sphere.radius / Math.sin(THREE.MathUtils.degToRad(camera.fov) / 2);
-    const direction = new THREE.Vector3(1, -1.4, 0.9).normalize();
-    camera.position.copy(sphere.center).addScaledVector(direction, distance);
+    const distance = radius / Math.sin(MathUtils.degToRad(camera.fov) / 2);
+    const direction = new Vector3(1, -1.4, 0.9).normalize();
+    camera.position.copy(center).addScaledVector(direction, distance);
     camera.up.set(0, 0, 1);
     camera.near = distance / 100;
     camera.far = distance * 10;
     camera.updateProjectionMatrix();
-    controls.target.copy(sphere.center);
+    controls.target.copy(center);
     controls.update();
+    camera.updateMatrixWorld();
+    viewChanged = true;
   };
 
   const ask = (deviation) => {
@@ -106,192 +167,111 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
     state.refining = true;
     worker.postMessage({ type: 'mesh', id: ++id, deviation });
   };
+  // A mesh is as fine as its certified bound says, when every triangle has one (a .cnb's own meshes are
+  // the file's: bound 0, nothing to refine).
+  const achieved = () => (state.uncertified ? state.deviation : Math.min(state.deviation, state.certified));
   const refine = () => {
-    if (pending || !sphere) return;
+    if (pending || !center) return;
     const wanted = pixelDeviation();
-    if (wanted * refineRatio < state.deviation) {
+    if (wanted * refineRatio < achieved()) {
       ask(wanted);
     } else if (state.refining) {
       state.refining = false;
-      if (state.subPixelMs === null) state.subPixelMs = performance.now() - state.started;
+      subPixelMeshId = meshId;
     }
+    updateCounting();
     status();
   };
   // The meshing's figures are of the part the file holds; a .cnb also states how far that lies from the
   // exact part it was written from, and the two add up.
-  const status = () => show(`${name} · ${state.triangles.toLocaleString()} triangles · meshed within ${formatLength(state.deviation)}` +
+  const status = () => show(`${name} · ${grouped(state.triangles)} triangles · meshed within ${formatLength(state.deviation)}` +
                             ` of the file (certified ${formatLength(state.certified)})` +
                             (state.fileDeviationBound > 0 ? ` · the file within ${formatLength(state.fileDeviationBound)} of the exact part` : '') +
                             ` · ${state.refining ? 'refining…' : 'meshed below one pixel'}`);
 
-  const place = (m) => {
-    const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute('position', new THREE.BufferAttribute(m.positions, 3));
-    geometry.setAttribute('normal', new THREE.BufferAttribute(m.normals, 3));
-    geometry.setAttribute('color', new THREE.BufferAttribute(m.colours, 3));
-    geometry.setIndex(new THREE.BufferAttribute(m.indices, 1));
-    geometry.computeBoundingSphere();
-    if (object) {
-      scene.remove(object);
-      object.geometry.dispose();
-    }
-    object = new THREE.Mesh(geometry, material);
-    scene.add(object);
-    dirty = true;
-    if (!sphere) {
-      sphere = geometry.boundingSphere.clone();
-      fit();
-    }
-  };
-
-  // The coarse mesh on the 2D canvas: each triangle in its first vertex's colour, lit as the thumbnail
-  // pictures are (a light over the viewer's shoulder, both sides lit), drawn far to near.
-  const drawSketch = (m) => {
-    const context = sketch.getContext('2d', { willReadFrequently: true });  // drawn by the CPU: no GPU start before the first frame
-    const width = sketch.width, height = sketch.height;
-    context.fillStyle = '#fff';
-    context.fillRect(0, 0, width, height);
-    camera.updateMatrixWorld();
-    const vertices = m.positions.length / 3, screen = new Float32Array(3 * vertices), v = new THREE.Vector3();
-    for (let i = 0; i < vertices; ++i) {
-      v.fromArray(m.positions, 3 * i).project(camera);
-      screen.set([(v.x + 1) / 2 * width, (1 - v.y) / 2 * height, v.z], 3 * i);
-    }
-    const triangles = m.indices.length / 3, depth = new Float32Array(triangles);
-    for (let t = 0; t < triangles; ++t)
-      depth[t] = screen[3 * m.indices[3 * t] + 2] + screen[3 * m.indices[3 * t + 1] + 2] + screen[3 * m.indices[3 * t + 2] + 2];
-    const order = Array.from({ length: triangles }, (_, t) => t).sort((a, b) => depth[b] - depth[a]);
-    const toLight = new THREE.Vector3(1, 1, 2).normalize().transformDirection(camera.matrixWorld);
-    const a = new THREE.Vector3(), b = new THREE.Vector3(), c = new THREE.Vector3();
-    context.lineWidth = 1;
-    for (const t of order) {
-      const [i, j, k] = [m.indices[3 * t], m.indices[3 * t + 1], m.indices[3 * t + 2]];
-      a.fromArray(m.positions, 3 * i);
-      b.fromArray(m.positions, 3 * j).sub(a);
-      c.fromArray(m.positions, 3 * k).sub(a);
-      const normal = b.cross(c);
-      const length = normal.length();
-      const shade = 0.35 + 0.65 * (length > 0 ? Math.abs(normal.dot(toLight)) / length : 0);
-      const rgb = [0, 1, 2].map((q) => Math.round(255 * Math.min(1, m.colours[3 * i + q] * shade)));
-      context.fillStyle = context.strokeStyle = `rgb(${rgb[0]},${rgb[1]},${rgb[2]})`;
-      context.beginPath();
-      context.moveTo(screen[3 * i], screen[3 * i + 1]);
-      context.lineTo(screen[3 * j], screen[3 * j + 1]);
-      context.lineTo(screen[3 * k], screen[3 * k + 1]);
-      context.closePath();
-      context.fill();
-      context.stroke();  // no hairlines between neighbours
-    }
-  };
-
-  const startWebGL = () => {
-    renderer = new THREE.WebGLRenderer({ antialias: true });
-    state.webglMs = performance.now() - state.started;
-    renderer.setPixelRatio(window.devicePixelRatio);
-    renderer.domElement.style.cssText = 'position: absolute; left: 0; top: 0;';
-    container.appendChild(renderer.domElement);
-    resize();
-    renderer.compile(scene, camera);
-    dirty = true;
-  };
-
   worker.onmessage = ({ data }) => {
     if (data.type === 'error') return fail(data.message);
     if (data.type === 'opened') {
-      diagonal = data.diagonal;
-      state.diagonal = diagonal;
+      diagonal = state.diagonal = data.diagonal;
       state.fileDeviationBound = data.fileDeviationBound;
-      state.openedMs = performance.now() - state.started;
+      state.openedMs = performance.now();
       state.moduleMs = data.moduleMs;
       state.readMs = data.readMs;
       if (!(diagonal > 0)) return fail('the part is empty');
-      pending = true;  // the worker meshes at coarseFraction at once
+      pending = true;  // the worker meshes coarsely at once (mesh_worker_start.mjs)
       state.refining = true;
       return;
     }
     pending = false;
-    place(data);
-    state.deviation = data.deviation;
-    state.certified = data.certifiedDeviation;
-    state.triangles = data.indices.length / 3;
-    state.meshes.push({ deviation: data.deviation, triangles: state.triangles, milliseconds: data.milliseconds,
-                        at: performance.now() - state.started });
-    if (!renderer) drawSketch(data);
-    requestAnimationFrame(() => {
-      if (state.firstFrameMs === null) state.firstFrameMs = performance.now() - state.started;
-      if (!renderer) startWebGL();
-      refine();
-    });
+    meshId = data.id;
+    Object.assign(state, { deviation: data.deviation, certified: data.certifiedDeviation, uncertified: data.uncertifiedTriangles,
+                           triangles: data.indices.length / 3 });
+    state.meshes.push({ deviation: data.deviation, triangles: state.triangles, milliseconds: data.milliseconds, at: performance.now() });
+    if (!center) {
+      bound(data.positions);
+      fit();
+    }
+    if (sketch && state.firstWebGLFrameMs === null) {
+      const sketching = performance.now();
+      drawSketch(sketch, camera, data);
+      state.sketchMs = performance.now() - sketching;
+      // Shown in the frame this rAF begins; the one after begins once that frame is out.
+      requestAnimationFrame(() => requestAnimationFrame(() => {
+        if (state.firstFrameMs === null) state.firstFrameMs = performance.now();
+        updateCounting();
+        startRenderer();
+      }));
+    }
+    const { positions, normals, colours, indices } = data;
+    if (viewChanged) sendView();
+    viewChanged = false;
+    tell({ type: 'mesh', id: meshId, positions, normals, colours, indices }, [positions.buffer, normals.buffer, colours.buffer, indices.buffer]);
+    refine();
   };
-  worker.onerror = (event) => fail(event.message || 'the worker failed');
-  controls.addEventListener('end', refine);
+  worker.onerror = (event) => fail(event.message || 'the mesh worker failed');
+  for (const event of said.splice(0)) worker.onmessage(event);
 
-  controls.addEventListener('change', () => { dirty = true; });
+  const onDrawn = ({ at, meshId: drawn, drawMs }) => {
+    const now = at - performance.timeOrigin;
+    state.longestDrawMs = Math.max(state.longestDrawMs, drawMs);
+    if (state.firstWebGLFrameMs === null) {
+      state.firstWebGLFrameMs = now;
+      if (state.firstFrameMs === null) state.firstFrameMs = now;
+      for (const shown of [sketch, picture]) if (shown) shown.style.visibility = 'hidden';
+    }
+    if (subPixelMeshId !== null && drawn >= subPixelMeshId) {
+      if (state.subPixelMs === null) state.subPixelMs = now;
+      subPixelMeshId = null;
+    }
+    updateCounting();
+  };
+  const fromRenderer = {
+    ready: ({ at }) => { state.webglMs = at - performance.timeOrigin; },
+    drawn: onDrawn,
+    gap: ({ longestFrameGap }) => { state.longestRenderGap = longestFrameGap; },
+    silhouettes: (reply) => silhouettesReply(reply),
+  };
+  controls.addEventListener('end', refine);
+  controls.addEventListener('change', () => { viewChanged = true; });
 
   // For tests: the silhouette of the mesh drawn now against that of another mesh of the part (positions in
   // the part's coordinates, float32, and indices), both drawn in the current view without antialiasing.
-  // Returns the pixels each covers and how many of each lie more than one pixel (in x or y) from the other.
-  state.compareSilhouettes = (positions, indices) => {
-    const width = renderer.domElement.width, height = renderer.domElement.height;
-    const target = new THREE.WebGLRenderTarget(width, height);
-    const flat = new THREE.MeshBasicMaterial({ color: 0x000000, side: THREE.DoubleSide });
-    const mask = (mesh) => {
-      const alone = new THREE.Scene();
-      alone.background = new THREE.Color(1, 1, 1);
-      alone.add(mesh);
-      renderer.setRenderTarget(target);
-      renderer.render(alone, camera);
-      renderer.setRenderTarget(null);
-      const rgba = new Uint8Array(4 * width * height);
-      renderer.readRenderTargetPixels(target, 0, 0, width, height, rgba);
-      const covered = new Uint8Array(width * height);
-      for (let i = 0; i < covered.length; ++i) covered[i] = rgba[4 * i] < 128 ? 1 : 0;
-      return covered;
-    };
-    const other = new THREE.BufferGeometry();
-    other.setAttribute('position', new THREE.BufferAttribute(positions, 3));
-    other.setIndex(new THREE.BufferAttribute(indices, 1));
-    const mine = mask(new THREE.Mesh(object.geometry, flat)), theirs = mask(new THREE.Mesh(other, flat));
-    other.dispose();
-    flat.dispose();
-    target.dispose();
-    const beyondOnePixel = (a, b) => {
-      let count = 0;
-      for (let y = 0; y < height; ++y)
-        for (let x = 0; x < width; ++x) {
-          if (!a[y * width + x] || b[y * width + x]) continue;
-          let near = false;
-          for (let dy = -1; dy <= 1 && !near; ++dy)
-            for (let dx = -1; dx <= 1 && !near; ++dx) {
-              const u = x + dx, v = y + dy;
-              near = u >= 0 && v >= 0 && u < width && v < height && b[v * width + u] === 1;
-            }
-          if (!near) ++count;
-        }
-      return count;
-    };
-    const count = (a) => a.reduce((sum, c) => sum + c, 0);
-    dirty = true;
-    return { width, height, viewerPixels: count(mine), otherPixels: count(theirs),
-             viewerBeyond: beyondOnePixel(mine, theirs), otherBeyond: beyondOnePixel(theirs, mine) };
-  };
+  // Resolves to the pixels each covers and how many of each lie more than one pixel (in x or y) from the
+  // other's.
+  state.compareSilhouettes = (positions, indices) => new Promise((resolve) => {
+    silhouettesReply = resolve;
+    tell({ type: 'silhouettes', positions, indices }, [positions.buffer, indices.buffer]);
+  });
+
   let last = performance.now();
-  // Frame gaps count while refining after the first frame with the part (that one compiles the shaders).
   const frame = (now) => {
-    if (state.refining && state.firstFrameMs !== null) state.longestFrameGap = Math.max(state.longestFrameGap, now - last);
+    if (counting()) state.longestFrameGap = Math.max(state.longestFrameGap, now - last);
     last = now;
     ++state.frames;
     controls.update();
-    if (dirty && renderer) {
-      dirty = false;
-      const drawing = performance.now();
-      renderer.render(scene, camera);
-      // What one draw costs the page's thread (the GPU's work, or a software renderer's), beside the gaps.
-      state.longestDrawMs = Math.max(state.longestDrawMs, performance.now() - drawing);
-      if (sketch.isConnected) {
-        sketch.remove();
-        state.firstWebGLFrameMs = performance.now() - state.started;
-      }
+    if (viewChanged && center) {
+      viewChanged = false;
+      sendView();
     }
     requestAnimationFrame(frame);
   };
@@ -301,24 +281,24 @@ export async function startViewer({ container, hud, partBytes, wasmBytes, partUr
   return state;
 }
 
-// A self-contained page (page.html): the part, the module and the worker's script are in its own elements.
+// A self-contained page (page.html): the part, the module and the workers' scripts are in its own elements.
 export function startEmbeddedViewer() {
   const text = (id) => document.getElementById(id).textContent;
-  const workerUrl = URL.createObjectURL(new Blob([text('cadnurbs-worker')], { type: 'text/javascript' }));
+  const script = (id) => URL.createObjectURL(new Blob([text(id)], { type: 'text/javascript' }));
   return startViewer({
     container: document.getElementById('cadnurbs-view'), hud: document.getElementById('cadnurbs-hud'),
-    partBytes: base64Bytes(text('cadnurbs-part')), wasmBytes: base64Bytes(text('cadnurbs-wasm')), workerUrl,
-    name: document.getElementById('cadnurbs-part').dataset.name,
+    part: { partBytes: base64Bytes(text('cadnurbs-part')), wasmBytes: base64Bytes(text('cadnurbs-wasm')), workerUrl: script('cadnurbs-worker') },
+    rendererUrl: script('cadnurbs-renderer'), name: document.getElementById('cadnurbs-part').dataset.name,
   });
 }
 
-// A page of a site (`batch --site`, site_page.html): the part's .cnb, the module and the worker's script are
-// files beside it, named by the cadnurbs-site element's data attributes (relative to the page).
+// A page of a site (`batch --site`, site_page.html): the part's .cnb, the module and the workers' scripts are
+// files of the site (sitePagePart); site_start.js has started the mesh worker, when the page loaded it.
 export function startSiteViewer() {
-  const site = document.getElementById('cadnurbs-site').dataset;
-  const url = (relative) => new URL(relative, document.baseURI).href;
+  const part = sitePagePart();
   return startViewer({
     container: document.getElementById('cadnurbs-view'), hud: document.getElementById('cadnurbs-hud'),
-    partUrl: url(site.part), wasmUrl: url(site.wasm), workerUrl: url(site.worker), name: site.name,
+    picture: document.getElementById('cadnurbs-picture'), meshWorker: window.cadnurbsMeshWorker ?? null, part,
+    rendererUrl: part.rendererUrl, name: part.name,
   });
 }
