@@ -47,10 +47,11 @@ async function load(origin, page) {
   const errors = [];
   tab.on('pageerror', (e) => errors.push(e.message));
   await tab.goto(`${origin}/${page.split('/').map(encodeURIComponent).join('/')}`);
-  await tab.waitForFunction(() => window.cadnurbsViewer && (window.cadnurbsViewer.error || window.cadnurbsViewer.subPixelMs !== null),
-                            null, { timeout: 60000 });
-  const figures = await tab.evaluate(() => {
-    const s = window.cadnurbsViewer;
+  // The viewer's record; before 2026-12 it was window.cadnurbsViewer, now the name of the viewer's script.
+  const record = () => window.cadnurbsViewerState ?? (window.cadnurbsViewer?.started !== undefined ? window.cadnurbsViewer : null);
+  await tab.waitForFunction(`(${record})()?.error || (${record})()?.subPixelMs > 0`, null, { timeout: 60000 });
+  const figures = await tab.evaluate((recordText) => {
+    const s = eval(`(${recordText})`)();
     // Viewers before this script's time counted from their own start, not the navigation's.
     const base = s.viewerStartedMs === undefined ? s.started : 0;
     const at = (value) => (value === null || value === undefined ? null : value + base);
@@ -58,7 +59,7 @@ async function load(origin, page) {
     return { contentfulPaint: paint ? paint.startTime : null, firstFrame: at(s.firstFrameMs), webglFrame: at(s.firstWebGLFrameMs),
              subPixel: at(s.subPixelMs), pageGap: s.longestFrameGap, rendererGap: s.longestRenderGap ?? null, meshes: s.meshes.length,
              error: s.error };
-  });
+  }, record.toString());
   await context.close();
   if (errors.length) figures.error += errors.join('; ');
   return figures;

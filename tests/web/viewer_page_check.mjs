@@ -95,7 +95,7 @@ async function compareSilhouettes(tab, name, state, problems) {
     const indices = Buffer.from(native.indices.buffer).toString('base64');
     const r = await tab.evaluate(({ positions, indices }) => {
       const bytes = (text) => Uint8Array.from(atob(text), (c) => c.charCodeAt(0)).buffer;
-      return window.cadnurbsViewer.compareSilhouettes(new Float32Array(bytes(positions)), new Uint32Array(bytes(indices)));
+      return window.cadnurbsViewerState.compareSilhouettes(new Float32Array(bytes(positions)), new Uint32Array(bytes(indices)));
     }, { positions, indices });
     const line = `${name}\tsilhouette ${label} (${native.indices.length / 3} triangles): viewer ${r.viewerPixels} px, ` +
                  `native ${r.otherPixels} px, beyond one pixel ${r.viewerBeyond} and ${r.otherBeyond}`;
@@ -120,9 +120,9 @@ for (const page of pages) {
   try {
     const before = siteProblems.length;
     await tab.goto(origin ? `${origin}/${page.split('/').map(encodeURIComponent).join('/')}` : pathToFileURL(resolve(page)).href);
-    await tab.waitForFunction(() => window.cadnurbsViewer && (window.cadnurbsViewer.error || window.cadnurbsViewer.subPixelMs !== null),
+    await tab.waitForFunction(() => window.cadnurbsViewerState && (window.cadnurbsViewerState.error || window.cadnurbsViewerState.subPixelMs !== null),
                               null, { timeout: Number(options.timeout) * 1000 });
-    state = await tab.evaluate(() => JSON.parse(JSON.stringify(window.cadnurbsViewer)));
+    state = await tab.evaluate(() => JSON.parse(JSON.stringify(window.cadnurbsViewerState)));
     if (state.error) problems.push(`viewer: ${state.error}`);
     if (!(state.triangles > 0)) problems.push('no triangles drawn');
     problems.push(...siteProblems.slice(before));

@@ -18,12 +18,3 @@ export function startMeshWorker({ workerUrl, partBytes, wasmBytes, partUrl, wasm
   }
   return { worker, said };
 }
-
-// A site page's part (site_page.html): its name and the URLs of its .cnb, the module and the workers'
-// scripts, from the cadnurbs-site element's data attributes (relative to the page).
-export function sitePagePart() {
-  const site = document.getElementById('cadnurbs-site').dataset;
-  const url = (relative) => new URL(relative, document.baseURI).href;
-  return { name: site.name, partUrl: url(site.part), wasmUrl: url(site.wasm), workerUrl: url(site.worker),
-           rendererUrl: url(site.renderer) };
-}

@@ -4,7 +4,7 @@
 // triangles that cross).
 //   canvas: its width and height in device pixels; camera: a three.js camera, its matrices up to date;
 //   mesh: {positions, colours (float32, 3 per vertex), indices (3 per triangle)}.
-import { Vector3 } from 'three';
+import { Vector3 } from './three_for_page.mjs';
 
 export function drawSketch(canvas, camera, { positions, colours, indices }) {
   const context = canvas.getContext('2d', { willReadFrequently: true });  // drawn by the CPU: no GPU start

@@ -6,12 +6,12 @@
 // second worker (render_worker.mjs) on an OffscreenCanvas, so that its start and its draws never hold the
 // page. Until WebGL's first frame the page shows its picture of the part (a site's page), or else the first
 // mesh sketched on a 2D canvas (sketch.mjs).
-// window.cadnurbsViewer says what the viewer did, for tests and for the curious; its times are
+// window.cadnurbsViewerState says what the viewer did, for tests and for the curious; its times are
 // milliseconds since the page's navigation started.
-import { MathUtils, PerspectiveCamera, Vector3 } from 'three';
-import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { MathUtils, OrbitControls, PerspectiveCamera, Vector3 } from './three_for_page.mjs';
 
-import { sitePagePart, startMeshWorker } from './mesh_worker_start.mjs';
+import { startMeshWorker } from './mesh_worker_start.mjs';
+import { whenPictureIsPainted } from './picture_painted.mjs';
 import { drawSketch } from './sketch.mjs';
 
 const finestFraction = 1e-5;     // of the diagonal: no finer, however close the camera comes
@@ -45,7 +45,7 @@ export function startViewer({ container, hud, picture = null, meshWorker = null,
     openedMs: null, webglMs: null, pictureMs: null, sketchMs: null, firstFrameMs: null, firstWebGLFrameMs: null, longestDrawMs: 0, subPixelMs: null,
     deviation: null, certified: null, triangles: 0, refining: false,
   };
-  window.cadnurbsViewer = state;
+  window.cadnurbsViewerState = state;
   const show = (text) => { if (hud) hud.textContent = text; };
   const fail = (message) => { state.error = message; show(`${name}: ${message}`); };
   if (typeof OffscreenCanvas === 'undefined' || !HTMLCanvasElement.prototype.transferControlToOffscreen) {
@@ -77,28 +77,15 @@ export function startViewer({ container, hud, picture = null, meshWorker = null,
     for (const [message, transfer] of toRenderer.splice(0)) renderer.postMessage(message, transfer);
   };
   const sketch = picture ? null : layer();  // above WebGL's canvas until WebGL draws
-  // The renderer starts when the picture has been painted: when the browser says so (Element Timing), or
-  // else two frames after it loaded; at once when it cannot load.
   if (picture) {
-    const afterTwoFrames = () => requestAnimationFrame(() => requestAnimationFrame(startRenderer));
-    if (PerformanceObserver.supportedEntryTypes?.includes('element')) {
-      new PerformanceObserver((list, observer) => {
-        const painted = list.getEntries().find((entry) => entry.identifier === picture.getAttribute('elementtiming'));
-        if (!painted) return;
-        observer.disconnect();
-        if (painted.renderTime > 0) {
-          state.pictureMs = painted.renderTime;
-          if (state.firstFrameMs === null || state.pictureMs < state.firstFrameMs) state.firstFrameMs = state.pictureMs;
-          updateCounting();
-        }
-        startRenderer();
-      }).observe({ type: 'element', buffered: true });
-    } else if (picture.complete) {
-      afterTwoFrames();
-    } else {
-      picture.addEventListener('load', afterTwoFrames);
-    }
-    picture.addEventListener('error', startRenderer);
+    whenPictureIsPainted(picture, (paintedMs) => {
+      if (paintedMs !== null) {
+        state.pictureMs = paintedMs;
+        if (state.firstFrameMs === null || paintedMs < state.firstFrameMs) state.firstFrameMs = paintedMs;
+        updateCounting();
+      }
+      startRenderer();
+    });
   }
 
   const camera = new PerspectiveCamera(35, 1, 1, 10);
@@ -292,13 +279,12 @@ export function startEmbeddedViewer() {
   });
 }
 
-// A page of a site (`batch --site`, site_page.html): the part's .cnb, the module and the workers' scripts are
-// files of the site (sitePagePart); site_start.js has started the mesh worker, when the page loaded it.
-export function startSiteViewer() {
-  const part = sitePagePart();
+// A page of a site (`batch --site`, site_page.html), called by its script site_start.js once the page's
+// picture is painted, with the mesh worker it started, the part (URLs of its .cnb and the shared files) and
+// the picture.
+export function startSiteViewer({ meshWorker, part, picture }) {
   return startViewer({
-    container: document.getElementById('cadnurbs-view'), hud: document.getElementById('cadnurbs-hud'),
-    picture: document.getElementById('cadnurbs-picture'), meshWorker: window.cadnurbsMeshWorker ?? null, part,
-    rendererUrl: part.rendererUrl, name: part.name,
+    container: document.getElementById('cadnurbs-view'), hud: document.getElementById('cadnurbs-hud'), picture,
+    meshWorker, rendererUrl: part.rendererUrl, name: part.name,
   });
 }
