@@ -1,6 +1,10 @@
 // The viewer's renderer, off the page's thread: three.js draws on the canvas the page hands over
-// (OffscreenCanvas), so that neither WebGL's start nor a slow draw (a software GPU) holds the page. It
-// starts WebGL at once, while the mesh worker is still reading the part. Messages in:
+// (OffscreenCanvas), so that neither WebGL's start nor a slow draw (a software GPU) holds the page.
+// While the view or the mesh changes it draws without antialiasing, at the page's pixel ratio; once
+// nothing has changed for settleMs and the viewer is not refining, it draws once more supersampled (twice
+// the pixel ratio where that is below 1.5; the browser scales the picture down), which smooths the edges
+// as multisampling would, without costing every frame (multisampling tripled a frame's time and WebGL's
+// start under SwiftShader). Messages in:
 //   {type: 'start', canvas: OffscreenCanvas, width, height, pixelRatio}
 //   {type: 'size', width, height}                                     CSS pixels (after start)
 //   {type: 'view', position, quaternion, fov, aspect, near, far}      the page's camera
@@ -13,7 +17,9 @@
 //   {type: 'gap', longestFrameGap}                                    this thread's longest gap while refining
 import * as THREE from 'three';
 
+const settleMs = 200;
 let renderer = null, object = null, dirty = false, refining = false, meshId = -1;
+let pixelRatio = 1, supersampled = false, settling = null;
 const scene = new THREE.Scene();
 scene.background = new THREE.Color(1, 1, 1);
 const camera = new THREE.PerspectiveCamera(35, 1, 1, 10);
@@ -37,8 +43,8 @@ function geometryOf({ positions, normals, colours, indices }) {
 // The pixels of the drawn mesh and of another mesh of the part (both drawn flat in the current view, no
 // antialiasing) and how many of each lie more than one pixel (in x or y) from the other's.
 function silhouettes({ positions, indices }) {
-  const size = renderer.getDrawingBufferSize(new THREE.Vector2());
-  const width = size.x, height = size.y;
+  const size = renderer.getSize(new THREE.Vector2());
+  const width = Math.floor(size.x * pixelRatio), height = Math.floor(size.y * pixelRatio);  // the page's pixels
   const target = new THREE.WebGLRenderTarget(width, height);
   const flat = new THREE.MeshBasicMaterial({ color: 0x000000, side: THREE.DoubleSide });
   const mask = (mesh) => {
@@ -80,9 +86,31 @@ function silhouettes({ positions, indices }) {
            viewerBeyond: beyondOnePixel(mine, theirs), otherBeyond: beyondOnePixel(theirs, mine) };
 }
 
+// Once nothing has changed for settleMs, and the viewer is not refining, the view drawn supersampled.
+function settleLater() {
+  clearTimeout(settling);
+  settling = setTimeout(() => {
+    if (refining || !renderer || !object || supersampled || pixelRatio >= 1.5) return;
+    supersampled = true;
+    renderer.setPixelRatio(2 * pixelRatio);
+    dirty = true;
+  }, settleMs);
+}
+
+// Something to draw again: at the page's pixel ratio now.
+function changed() {
+  dirty = object !== null;
+  if (supersampled && renderer) {
+    supersampled = false;
+    renderer.setPixelRatio(pixelRatio);
+  }
+  settleLater();
+}
+
 const handlers = {
-  start({ canvas, width, height, pixelRatio }) {
-    renderer = new THREE.WebGLRenderer({ canvas, antialias: true });
+  start({ canvas, width, height, pixelRatio: ratio }) {
+    pixelRatio = ratio;
+    renderer = new THREE.WebGLRenderer({ canvas, antialias: false });
     renderer.setPixelRatio(pixelRatio);
     renderer.setSize(width, height, false);
     renderer.compile(scene, camera);
@@ -90,14 +118,14 @@ const handlers = {
   },
   size({ width, height }) {
     if (renderer) renderer.setSize(width, height, false);
-    dirty = object !== null;
+    changed();
   },
   view({ position, quaternion, fov, aspect, near, far }) {
     camera.position.fromArray(position);
     camera.quaternion.fromArray(quaternion);
     Object.assign(camera, { fov, aspect, near, far });
     camera.updateProjectionMatrix();
-    dirty = object !== null;
+    changed();
   },
   mesh(m) {
     if (object) {
@@ -107,10 +135,11 @@ const handlers = {
     object = new THREE.Mesh(geometryOf(m), material);
     scene.add(object);
     meshId = m.id;
-    dirty = true;
+    changed();
   },
   refining({ value }) {
     refining = value;
+    settleLater();
   },
   silhouettes(request) {
     self.postMessage(silhouettes(request));
