@@ -3,13 +3,14 @@
 // While the view or the mesh changes it draws without antialiasing, at the page's pixel ratio; once
 // nothing has changed for settleMs and the viewer is not refining, it draws once more supersampled (twice
 // the pixel ratio where that is below 1.5; the browser scales the picture down), which smooths the edges
-// as multisampling would, without costing every frame (multisampling tripled a frame's time and WebGL's
-// start under SwiftShader). Messages in:
+// as multisampling would without costing every frame (under SwiftShader multisampling slowed WebGL's start
+// and every frame: the renderer's longest gap 621 ms against 263, bench/README.md). Messages in:
 //   {type: 'start', canvas: OffscreenCanvas, width, height, pixelRatio}
 //   {type: 'size', width, height}                                     CSS pixels (after start)
 //   {type: 'view', position, quaternion, fov, aspect, near, far}      the page's camera
 //   {type: 'mesh', id, positions, normals, colours, indices}          float32 arrays, Uint32Array indices
-//   {type: 'refining', value}                                         whether frame gaps count
+//   {type: 'refining', value}                                         whether the viewer is refining (gaps
+//                                                                     count, no settled frame)
 //   {type: 'silhouettes', positions, indices}  -> {type: 'silhouettes', ...counts} (viewer.mjs says what)
 // Messages out (at: milliseconds since the epoch, so that the page can place them on its own clock):
 //   {type: 'ready', at}                                               WebGL started
