@@ -5,17 +5,24 @@
 //
 //   node compare_with_native.mjs MODULE_DIR NATIVE_TOOL FRACTION OUT_DIR FILE...
 //
+// A FILE that is a folder stands for every .cnb file under it (a batch's outputs).
+//
 // Prints one line per file (counts, largest position difference over the diagonal, both meshing times)
 // and exits 1 when any file differs or fails on one side only. A file both sides refuse with the same
 // message passes (the message is printed).
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, readFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readdirSync, readFileSync, statSync } from 'node:fs';
 import { createRequire } from 'node:module';
-import { basename, join } from 'node:path';
+import { basename, join, resolve } from 'node:path';
 
 import { readNativeArrays } from './native_arrays.mjs';
 
-const [moduleDir, nativeTool, fractionText, outDir, ...files] = process.argv.slice(2);
+const [moduleDirGiven, nativeTool, fractionText, outDir, ...given] = process.argv.slice(2);
+const cnbUnder = (folder) => readdirSync(folder, { withFileTypes: true }).sort((a, b) => (a.name < b.name ? -1 : 1))
+  .flatMap((entry) => (entry.isDirectory() ? cnbUnder(join(folder, entry.name))
+                       : entry.name.endsWith('.cnb') ? [join(folder, entry.name)] : []));
+const files = given.flatMap((path) => (existsSync(path) && statSync(path).isDirectory() ? cnbUnder(path) : [path]));
+const moduleDir = resolve(moduleDirGiven ?? '');  // imported below: a relative path would name a package
 if (!files.length) {
   console.error('usage: node compare_with_native.mjs MODULE_DIR NATIVE_TOOL FRACTION OUT_DIR FILE...');
   process.exit(2);
@@ -47,7 +54,7 @@ function largestDifference(a, b) {
 
 let failures = 0;
 for (const file of files) {
-  const name = basename(file);
+  const name = basename(file);  // the dumps of same-named files in two folders take turns: each is read at once
   const dump = join(outDir, `${name}.native`);
   let native, nativeError = '', nativeMs = 0;
   try {
