@@ -139,8 +139,15 @@ double scale_keeping_sewn(const Scene& scene, const CnbOptions& options) {
           sewn.open_pieces > own.open_pieces + (own.open_pieces + 99) / 100)
         continue;
       // Sewn alike; meshed alike too? (At most kMeshChecks scales: a mesh of pieces sewn across moved
-      // vertices can take minutes, so after that a failure goes straight to the safe scale.)
+      // vertices can take minutes, so after that a failure goes straight to the safe scale.) Most scales
+      // that do not mesh alike fail already on their shared edges, which are sampled before any face is
+      // meshed: DIP-18_W8.89mm_SMDSocket at 1e-3 of its diagonal meshed its file at 1/45 of D in 13.8 s,
+      // to 19,240 uncertified triangles and 170 unshared edge uses against the part's 0 and 0.
       if (!mine) mine = meshed_as_read(scene, d);
+      if (certified_scene_unshared_edge_uses(decoded, d, EdgeSource::file) > mine->unshared) {
+        if (++mesh_checks == kMeshChecks) return safe;
+        continue;
+      }
       const MeshedAsRead back = meshed_as_read(decoded, d);
       // An open part's rim meshed finer is longer (its chords approach the curves from below): the rim
       // is compared with the longer of the scene's mesh rim and its rim as sewing samples it, as

@@ -50,17 +50,28 @@ bool sewn_when_meshed(const Scene& scene) {
   return counts.surfaces + counts.polygon_meshes > 0 && (counts.polygon_meshes > 0 || !names_shared_edges(scene));
 }
 
+namespace {
+// The faces certified_scene_mesh tessellates: `scene`, or its faces sewn (into result.faces).
+const Scene& faces_to_tessellate(const Scene& scene, double max_deviation, EdgeSource edges, CertifiedMesh& result) {
+  result.sewn = edges == EdgeSource::file && sewn_when_meshed(scene);
+  if (!result.sewn) return scene;
+  result.sewing_tolerance = sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), max_deviation);
+  result.faces = sew_faces(scene, result.sewing_tolerance, &result.sewing);
+  return result.faces;
+}
+}  // namespace
+
 CertifiedMesh certified_scene_mesh(const Scene& scene, double max_deviation, EdgeSource edges,
                                    bool check_face_areas) {
   CertifiedMesh result;
-  result.sewn = edges == EdgeSource::file && sewn_when_meshed(scene);
-  if (result.sewn) {
-    result.sewing_tolerance = sewing_tolerance(scene_bounding_box(scene).diagonal().norm(), max_deviation);
-    result.faces = sew_faces(scene, result.sewing_tolerance, &result.sewing);
-  }
-  result.meshes =
-      tessellate_to_deviation(result.sewn ? result.faces : scene, max_deviation, &result.report, check_face_areas);
+  const Scene& faces = faces_to_tessellate(scene, max_deviation, edges, result);
+  result.meshes = tessellate_to_deviation(faces, max_deviation, &result.report, check_face_areas);
   return result;
+}
+
+int certified_scene_unshared_edge_uses(const Scene& scene, double max_deviation, EdgeSource edges) {
+  CertifiedMesh sewing;
+  return unshared_edge_uses(faces_to_tessellate(scene, max_deviation, edges, sewing), max_deviation);
 }
 
 }  // namespace cadnurbs

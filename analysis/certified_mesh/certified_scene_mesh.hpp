@@ -29,6 +29,10 @@ struct CertifiedMesh {
 CertifiedMesh certified_scene_mesh(const Scene& scene, double max_deviation, EdgeSource edges,
                                    bool check_face_areas = false);
 
+// What certified_scene_mesh(scene, max_deviation, edges) reports as unshared_edge_uses, without meshing a
+// face: sewn as it sews, then tessellate_to_deviation's steps 1 and 2 (unshared_edge_uses).
+int certified_scene_unshared_edge_uses(const Scene& scene, double max_deviation, EdgeSource edges);
+
 // Whether a scene from a file of faces is sewn before meshing: it has NURBS faces or polygon sets, and
 // polygon sets, or an untrimmed face, or a loop without edge numbers, or no edge number that two faces
 // share. Not when its loops carry shared-edge numbers and it holds no polygon sets (a .cnb of the exact

@@ -29,7 +29,8 @@ class Tessellator {
   Tessellator(std::vector<Face>& faces, double d, TessellationReport& report)
       : faces_(faces), d_(d), report_(report), shared_(faces, d, report) {}
 
-  void run() {
+  // `mesh_faces` false: steps 1 and 2 alone (the report's shared-edge figures, no face meshed).
+  void run(bool mesh_faces = true) {
     for (auto& f : faces_) guarded(f, [&] { prepare(f); });
     // Step 2: shared edges.
     shared_.find_degenerate_curves();
@@ -63,6 +64,7 @@ class Tessellator {
         for (const CurveUse& use : curves[it->curve].uses) stale[use.face] = 1;
       }
     }
+    if (!mesh_faces) return;
     // Steps 3 to 5, face by face.
     for (auto& f : faces_) guarded(f, [&] { tessellation::mesh_face(f, d_, report_); });
     report_.faces += static_cast<int>(faces_.size());
@@ -157,6 +159,17 @@ Scene tessellate_to_deviation(const Scene& scene, double max_deviation, Tessella
       }
   for (size_t i = 0; i < faces.size(); ++i) shapes[i]->geometry = std::move(faces[i].mesh);
   return out;
+}
+
+int unshared_edge_uses(const Scene& scene, double max_deviation) {
+  check_deviation(max_deviation);
+  TessellationReport report;
+  Scene faces_of = scene;
+  std::vector<Face> faces;
+  std::vector<Shape*> shapes;
+  collect_faces(faces_of.root, faces_of.root.name, Eigen::Affine3d::Identity(), faces, shapes);
+  Tessellator(faces, max_deviation, report).run(false);
+  return report.unshared_edge_uses;
 }
 
 }  // namespace cadnurbs

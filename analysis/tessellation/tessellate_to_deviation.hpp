@@ -74,6 +74,11 @@ struct TessellationReport {
 TriangleMesh tessellate_to_deviation(const TrimmedSurface& surface, double max_deviation,
                                      TessellationReport* report = nullptr);
 
+// What tessellate_to_deviation(scene, max_deviation) reports as unshared_edge_uses, from its steps 1 and 2
+// alone (no face is meshed: a small part of the cost where faces refine long). Throws what those steps
+// throw; a face that step 3 would refuse is not seen.
+int unshared_edge_uses(const Scene& scene, double max_deviation);
+
 // The scene with every NURBS surface replaced by its mesh (one Shape per face: names, colours,
 // transforms and tree kept; meshes and curves pass through). Segments with the same edge id carry
 // bit-identical vertices on all the faces that use them, so weld_exact of a closed solid's faces

@@ -13,6 +13,7 @@
 #include "analysis/tessellation/tessellate_to_deviation.hpp"
 #include "analysis/mesh/weld_exact.hpp"
 #include "analysis/eval/sample_trim_segment.hpp"
+#include "core/geometry_error.hpp"
 #include "analysis_shapes.hpp"
 #include "samples/capping.hpp"
 #include "samples/capping_edges.hpp"
@@ -154,6 +155,23 @@ TEST(Watertight, WeldExactMergesOnlyIdenticalPositions) {
   fan.triangles = {{0, 1, 2}, {0, 2, 1}, {0, 1, 3}};
   const EdgeCounts e = count_boundary_edges(fan);
   EXPECT_EQ(e.non_manifold, 1);  // edge 0-1 has three triangles
+}
+
+// unshared_edge_uses gives tessellate_to_deviation's count from its edge sampling alone: 0 for the capping,
+// and the same count once a lid is moved 10 D off the body's edges.
+TEST(Watertight, UnsharedEdgeUsesCountsAsTheWholeTessellationDoes) {
+  const double d = 0.05;
+  Scene scene = capping_with_edges("capping-90");
+  TessellationReport whole;
+  tessellate_to_deviation(scene, d, &whole);
+  EXPECT_EQ(whole.unshared_edge_uses, 0);
+  EXPECT_EQ(unshared_edge_uses(scene, d), 0);
+  for (Eigen::Vector3d& p : std::get<TrimmedSurface>(scene.root.shapes[1].geometry).surface.points) p.x() += 10 * d;
+  TessellationReport moved;
+  tessellate_to_deviation(scene, d, &moved);
+  EXPECT_GT(moved.unshared_edge_uses, 0);
+  EXPECT_EQ(unshared_edge_uses(scene, d), moved.unshared_edge_uses);
+  EXPECT_THROW(unshared_edge_uses(scene, 0.0), GeometryError);
 }
 
 }  // namespace
