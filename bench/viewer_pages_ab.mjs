@@ -68,6 +68,8 @@ async function load(origin, page, alone) {
   const errors = [];
   tab.on('pageerror', (e) => errors.push(e.message));
   await tab.addInitScript(() => {
+    // The viewer's record; before 2026-12 it was window.cadnurbsViewer, now the name of the viewer's script.
+    window.viewerRecord = () => window.cadnurbsViewerState ?? (window.cadnurbsViewer?.started !== undefined ? window.cadnurbsViewer : null);
     window.frameTimes = [];
     const frame = (time) => { window.frameTimes.push(time); requestAnimationFrame(frame); };
     requestAnimationFrame(frame);
@@ -78,11 +80,9 @@ async function load(origin, page, alone) {
     await context.close();
     return figures;
   }
-  // The viewer's record; before 2026-12 it was window.cadnurbsViewer, now the name of the viewer's script.
-  const record = () => window.cadnurbsViewerState ?? (window.cadnurbsViewer?.started !== undefined ? window.cadnurbsViewer : null);
-  await tab.waitForFunction(`(${record})()?.error || (${record})()?.subPixelMs > 0`, null, { timeout: 60000 });
-  const figures = await tab.evaluate((recordText) => {
-    const s = eval(`(${recordText})`)();
+  await tab.waitForFunction(() => window.viewerRecord()?.error || window.viewerRecord()?.subPixelMs > 0, null, { timeout: 60000 });
+  const figures = await tab.evaluate(() => {
+    const s = window.viewerRecord();
     // Viewers before this script's time counted from their own start, not the navigation's.
     const base = s.viewerStartedMs === undefined ? s.started : 0;
     const at = (value) => (value === null || value === undefined ? null : value + base);
@@ -90,7 +90,7 @@ async function load(origin, page, alone) {
     return { contentfulPaint: paint ? paint.startTime : null, firstFrame: at(s.firstFrameMs), webglFrame: at(s.firstWebGLFrameMs),
              subPixel: at(s.subPixelMs), pageGap: s.longestFrameGap, rendererGap: s.longestRenderGap ?? null, meshes: s.meshes.length,
              error: s.error };
-  }, record.toString());
+  });
   await context.close();
   if (errors.length) figures.error += errors.join('; ');
   return figures;

@@ -1,7 +1,8 @@
 // What the page's thread takes of three.js: the camera, the orbit controls and the math they use, from
-// three's own source files, so that the viewer's script (viewer.js) carries these alone (87 KB, where
+// three's own source files, so that the viewer's script (viewer.js) carries these alone (92 KB, where
 // 'three' as a whole brought its renderer: 292 KB). web/CMakeLists.txt bundles viewer.js with 'three'
 // pointed here, for the orbit controls' own import of it. The renderer's worker takes 'three' whole.
+export { Box3 } from './node_modules/three/src/math/Box3.js';
 export { Controls } from './node_modules/three/src/extras/Controls.js';
 export { MOUSE, TOUCH } from './node_modules/three/src/constants.js';
 export * as MathUtils from './node_modules/three/src/math/MathUtils.js';

@@ -8,7 +8,7 @@
 // mesh sketched on a 2D canvas (sketch.mjs).
 // window.cadnurbsViewerState says what the viewer did, for tests and for the curious; its times are
 // milliseconds since the page's navigation started.
-import { MathUtils, OrbitControls, PerspectiveCamera, Vector3 } from './three_for_page.mjs';
+import { Box3, MathUtils, OrbitControls, PerspectiveCamera, Vector3 } from './three_for_page.mjs';
 
 import { startMeshWorker } from './mesh_worker_start.mjs';
 import { whenPictureIsPainted } from './picture_painted.mjs';
@@ -41,7 +41,7 @@ function formatLength(value) {
 // browser that cannot draw WebGL in a worker.
 export function startViewer({ container, hud, picture = null, meshWorker = null, part = {}, rendererUrl, name }) {
   const state = {
-    name, viewerStartedMs: performance.now(), error: '', frames: 0, longestFrameGap: 0, longestRenderGap: 0, meshes: [],
+    name, viewerStartedMs: performance.now(), error: '', longestFrameGap: 0, longestRenderGap: 0, meshes: [],
     openedMs: null, webglMs: null, pictureMs: null, sketchMs: null, firstFrameMs: null, firstWebGLFrameMs: null, longestDrawMs: 0, subPixelMs: null,
     deviation: null, certified: null, triangles: 0, refining: false,
   };
@@ -92,10 +92,13 @@ export function startViewer({ container, hud, picture = null, meshWorker = null,
   const controls = new OrbitControls(camera, container);
   let diagonal = 0, center = null, radius = 0, pixels = 1, pending = false, id = 0, meshId = -1, subPixelMeshId = null;
   let viewChanged = false, silhouettesReply = null;
-  const sendView = () => tell({
-    type: 'view', position: camera.position.toArray(), quaternion: camera.quaternion.toArray(),
-    fov: camera.fov, aspect: camera.aspect, near: camera.near, far: camera.far,
-  });
+  // The camera to the renderer, when it moved (orbit, fit, size) since it was last sent.
+  const sendViewIfChanged = () => {
+    if (!viewChanged) return;
+    viewChanged = false;
+    tell({ type: 'view', position: camera.position.toArray(), quaternion: camera.quaternion.toArray(),
+           fov: camera.fov, aspect: camera.aspect, near: camera.near, far: camera.far });
+  };
   // Frame gaps count from the first frame until the sub-pixel mesh is drawn, and whenever refining after.
   const counting = () => state.firstFrameMs !== null && (state.refining || state.subPixelMs === null);
   let countingGaps = false;
@@ -124,12 +127,7 @@ export function startViewer({ container, hud, picture = null, meshWorker = null,
 
   // The bounding sphere as three.js makes it (the box's centre, the farthest point), of the first mesh.
   const bound = (positions) => {
-    const low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
-    for (let i = 0; i < positions.length; ++i) {
-      low[i % 3] = Math.min(low[i % 3], positions[i]);
-      high[i % 3] = Math.max(high[i % 3], positions[i]);
-    }
-    center = new Vector3((low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2);
+    center = new Box3().setFromArray(positions).getCenter(new Vector3());
     const p = new Vector3();
     for (let i = 0; i < positions.length; i += 3) radius = Math.max(radius, center.distanceToSquared(p.fromArray(positions, i)));
     radius = Math.sqrt(radius);
@@ -210,8 +208,7 @@ export function startViewer({ container, hud, picture = null, meshWorker = null,
       }));
     }
     const { positions, normals, colours, indices } = data;
-    if (viewChanged) sendView();
-    viewChanged = false;
+    sendViewIfChanged();
     tell({ type: 'mesh', id: meshId, positions, normals, colours, indices }, [positions.buffer, normals.buffer, colours.buffer, indices.buffer]);
     refine();
   };
@@ -254,12 +251,8 @@ export function startViewer({ container, hud, picture = null, meshWorker = null,
   const frame = (now) => {
     if (counting()) state.longestFrameGap = Math.max(state.longestFrameGap, now - last);
     last = now;
-    ++state.frames;
     controls.update();
-    if (viewChanged && center) {
-      viewChanged = false;
-      sendView();
-    }
+    if (center) sendViewIfChanged();
     requestAnimationFrame(frame);
   };
   requestAnimationFrame(frame);
